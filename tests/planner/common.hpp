@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <string>
 
 #include "hexstep/planner.hpp"
 
@@ -96,6 +97,20 @@ inline real min_time_bisect(real N, real v0, real ve, real vM, real a, real d) {
 inline real envelope(real x, real N, real v0, real ve, real vM, real a, real d) {
   ve = reachable_end(N, v0, ve, a, d);
   return std::min({vM, std::sqrt(v0 * v0 + 2 * a * x), std::sqrt(ve * ve + 2 * d * std::max<real>(N - x, 0))});
+}
+
+// Runs f, expects a PlanError whose one-line message starts with `flag:` and contains `part`.
+template <class F>
+inline void expect_error(F f, const std::string& flag, const std::string& part = "") {
+  try {
+    f();
+    ADD_FAILURE() << "no PlanError, expected one naming " << flag;
+  } catch (const PlanError& e) {
+    const std::string w = e.what();
+    EXPECT_EQ(w.rfind(flag + ":", 0), 0u) << w;
+    EXPECT_NE(w.find(part), std::string::npos) << w;
+    EXPECT_EQ(w.find('\n'), std::string::npos) << w;
+  }
 }
 
 }  // namespace hexstep::plan::test

@@ -16,18 +16,6 @@ using hexstep::real;
 namespace {
 constexpr real kClock = 100e6;
 
-template <class F>
-void expect_error(F f, const std::string& flag, const std::string& part = "") {
-  try {
-    f();
-    ADD_FAILURE() << "no PlanError, expected one naming " << flag;
-  } catch (const PlanError& e) {
-    const std::string w = e.what();
-    EXPECT_EQ(w.rfind(flag + ":", 0), 0u) << w;
-    EXPECT_NE(w.find(part), std::string::npos) << w;
-    EXPECT_EQ(w.find('\n'), std::string::npos) << w;
-  }
-}
 
 struct RunStats {
   real worst_ratio = 0;  // worst |error| / allowance

@@ -11,19 +11,6 @@ using namespace hexstep::plan::test;
 using hexstep::real;
 
 namespace {
-// Runs f, expects a PlanError whose message starts with `flag` and contains `part`.
-template <class F>
-void expect_error(F f, const std::string& flag, const std::string& part = "") {
-  try {
-    f();
-    ADD_FAILURE() << "no PlanError, expected one naming " << flag;
-  } catch (const PlanError& e) {
-    const std::string w = e.what();
-    EXPECT_EQ(w.rfind(flag + ":", 0), 0u) << w;
-    EXPECT_NE(w.find(part), std::string::npos) << w;
-    EXPECT_EQ(w.find('\n'), std::string::npos) << w;
-  }
-}
 const real kNaN = std::numeric_limits<real>::quiet_NaN();
 const real kInf = std::numeric_limits<real>::infinity();
 }  // namespace
