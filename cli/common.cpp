@@ -33,6 +33,18 @@ void write_stdout(const std::string& text) {
     throw CliError(kExitInternal, std::string("cannot write to stdout: ") + std::strerror(errno));
 }
 
+void write_output(const std::string& path, const std::string& text, const std::string& flag) {
+  if (path.empty() || path == "-") return write_stdout(text);
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw CliError(kExitUsage, flag + ": cannot open " + path + " for writing: " + std::strerror(errno));
+  const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  const int err = errno;
+  if (std::fclose(f) != 0 || !ok) {
+    std::remove(path.c_str());
+    throw CliError(kExitInternal, flag + ": cannot write " + path + ": " + std::strerror(ok ? errno : err));
+  }
+}
+
 std::string format_seconds(uint64_t cycle, uint64_t clock_hz) {
   using u128 = unsigned __int128;
   unsigned d = 0;

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: command-line entry point. Each subcommand lives in its own file (simulate.cpp; plan
-// and send are to come) and registers itself on the CLI11 app here.
+// hexstep: command-line entry point. Each subcommand lives in its own file (simulate.cpp,
+// plan.cpp; send is to come) and registers itself on the CLI11 app here.
 #include <exception>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "common.hpp"
+#include "plan.hpp"
 #include "simulate.hpp"
 
 int main(int argc, char** argv) {
@@ -19,12 +20,16 @@ int main(int argc, char** argv) {
   app.footer(
       "Run 'hexstep SUBCOMMAND --help' for the options of a subcommand.\n"
       "Exit status: 0 success; 1 internal error; 2 bad command line, unreadable or invalid job\n"
-      "file, or engine not built; 3 the core refused a move the job reader accepted;\n"
-      "4 the run did not finish within --max-cycles.");
+      "or request file, engine not built, or a move the planner, the registers or the pulse\n"
+      "timing cannot do; 3 (plan) the --time budget is shorter than the fastest possible move;\n"
+      "4 (simulate) the run did not finish within --max-cycles; 5 (simulate) the core refused a\n"
+      "move the job reader accepted.");
 
   SimulateOptions sim_opt;
   CLI::App* sim = add_simulate(app, sim_opt);
-  // Later: add_plan(app, ...), add_send(app, ...).
+  PlanOptions plan_opt;
+  CLI::App* plan = add_plan(app, plan_opt);
+  // Later: add_send(app, ...).
 
   try {
     app.parse(argc, argv);
@@ -35,6 +40,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (sim->parsed()) return run_simulate(sim_opt);
+    if (plan->parsed()) return run_plan(plan_opt);
     std::cerr << "hexstep: error: no subcommand (see hexstep --help)\n";
     return kExitUsage;
   } catch (const CliError& e) {

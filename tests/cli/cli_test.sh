@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: Apache-2.0
 # Black-box tests of the `hexstep` command line.
 # Usage: cli_test.sh HEXSTEP EXAMPLES_DIR HAVE_RTL(0|1) [CASE...]
-# CASE is one of: csv stdin event summary errors timeout rtl help (default: all).
+# CASE is one of: csv stdin event summary errors timeout rtl help plan_csv plan_c plan_pipe
+# plan_line plan_help (default: all). `hexstep plan`'s values and errors: test_plan.cpp.
 set -u
 
 HEXSTEP=$1
 EXAMPLES=$2
 HAVE_RTL=$3
 shift 3
-CASES=${*:-csv stdin event summary errors timeout rtl help}
+CASES=${*:-csv stdin event summary errors timeout rtl help plan_csv plan_c plan_pipe plan_line plan_help}
 
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
@@ -69,6 +70,21 @@ make_job() {
 }
 GOOD_MOVE='{"steps": 300, "dir": 0, "v_start": 1152921504606846976, "v_max": 1152921504606846976,
             "v_end": 1152921504606846976, "acc": 0, "dec": 0, "v_dec": 1152921504606846976, "acc_steps": 0, "dec_step": 300, "dec_frac": 0}'
+
+PLAN_CSV_HEADER=axis,profile,dir,total_steps,accel_steps,cruise_steps,decel_steps,start_speed_steps_per_s,peak_speed_steps_per_s,end_speed_steps_per_s,accel_steps_per_s2,decel_steps_per_s2,t_accel_s,t_cruise_s,t_decel_s,duration_s,executed_peak_speed_steps_per_s,executed_duration_s,warning
+# A six-axis line request (docs/FORMATS.md, "Planning request"): several units, a zero move.
+cat >"$TMP/line6.json" <<'EOF'
+{"format": "hexstep-plan-request", "version": 1, "clock_hz": 100000000, "mode": "line",
+ "axes": [
+  {"axis": 0, "steps": 400, "max_speed": 200000, "accel": 200000000},
+  {"axis": 1, "steps": -300, "max_speed": 200000, "accel": 200000000,
+   "pulse": {"step_high": 3, "step_low": 3, "dir_setup": 2, "dir_hold": 2}},
+  {"axis": 2, "distance": 0.5, "unit": "rev", "steps_per_rev": 400, "max_speed": 500, "accel": 500000},
+  {"axis": 3, "distance": -45, "unit": "deg", "steps_per_rev": 800, "max_speed": 90000, "accel": 90000000, "ratio": 2},
+  {"axis": 4, "distance": 0.25, "unit": "mm", "steps_per_rev": 400, "pitch_mm": 2, "max_speed": 1000, "accel": 1000000},
+  {"axis": 5, "steps": 0, "max_speed": 1000, "accel": 1000}
+ ]}
+EOF
 
 for c in $CASES; do
   case $c in
@@ -193,6 +209,8 @@ for c in $CASES; do
     check "help: exit 0" test "$RC" -eq 0
     check "help: lists simulate" grep -q simulate "$TMP/h.out"
     check "help: exit statuses" grep -q 'Exit status' "$TMP/h.out"
+    check "help: exit status 3 = infeasible time budget" grep -q '3 (plan) the --time budget' "$TMP/h.out"
+    check "help: exit status 5 = move refused by the core" grep -q '5 (simulate) the core refused' "$TMP/h.out"
     run hs simulate --help
     check "simulate --help: exit 0" test "$RC" -eq 0
     for flag in --engine --event-mode --max-cycles --summary --trace JOB.json; do
@@ -201,6 +219,124 @@ for c in $CASES; do
     check "simulate --help: CSV header" grep -q 'axis,step,cycle,time_s,dir' "$TMP/hs.out"
     run hn
     check "no subcommand: exit 2" test "$RC" -eq 2
+    ;;
+  plan_csv)
+    # One line per axis under the documented header; total_steps signed.
+    run pc plan --steps -700 --max-speed 5000 --accel 100000 --axis 2 --format csv
+    check "plan csv: exit 0" test "$RC" -eq 0
+    check "plan csv: header" test "$(head -n 1 "$TMP/pc.out")" = "$PLAN_CSV_HEADER"
+    check "plan csv: one data line" test "$(wc -l <"$TMP/pc.out")" -eq 2
+    check "plan csv: 19 columns, axis 2, dir 0, total -700, counts sum to 700" awk -F, '
+      NR == 2 { if (NF != 19 || $1 != 2 || $3 != 0 || $4 != -700 || $5 + $6 + $7 != 700) exit 1 }' "$TMP/pc.out"
+    run pcl plan --job "$TMP/line6.json" --format csv
+    check "plan csv line: exit 0" test "$RC" -eq 0
+    check "plan csv line: six data lines, axes 0..5" test "$(awk -F, 'NR > 1 {printf "%s", $1}' "$TMP/pcl.out")" = "012345"
+    ;;
+  plan_c)
+    # The header compiles as C99 with every warning an error, alone and used, one axis and six.
+    CC_BIN=${CC:-cc}
+    if ! command -v "$CC_BIN" >/dev/null; then
+      bad "plan c: no C compiler ($CC_BIN)"
+      continue
+    fi
+    run ph plan --steps -700 --max-speed 5000 --accel 100000 --axis 3 --step-high 4 --format c --out "$TMP/plan1.h"
+    check "plan c: exit 0, nothing on stdout" test "$RC" -eq 0 -a ! -s "$TMP/ph.out"
+    run ph6 plan --job "$TMP/line6.json" --format c --out "$TMP/plan6.h"
+    check "plan c line: exit 0" test "$RC" -eq 0
+    for h in plan1 plan6; do
+      check "plan c $h: include guard" grep -q '^#ifndef HEXSTEP_PLAN_H' "$TMP/$h.h"
+      check "plan c $h: stdint.h" grep -q '^#include <stdint.h>' "$TMP/$h.h"
+      check "plan c $h: clock macro" grep -q '^#define HEXSTEP_PLAN_CLOCK_HZ UINT64_C(100000000)' "$TMP/$h.h"
+      printf '#include "%s.h"\n' "$h" >"$TMP/${h}_only.c"
+      check "plan c $h: compiles alone (cc -std=c99 -Wall -Werror)" \
+        "$CC_BIN" -std=c99 -Wall -Werror -c "$TMP/${h}_only.c" -o "$TMP/${h}_only.o"
+      cat >"$TMP/${h}_use.c" <<EOF
+#include "$h.h"
+#include "$h.h"
+uint64_t total_steps(void);
+uint64_t total_steps(void) {
+  uint64_t n = 0;
+  unsigned i;
+  for (i = 0; i < HEXSTEP_PLAN_NUM_AXES; ++i)
+    n += hexstep_plan_moves[i].steps + hexstep_plan_moves[i].v_max * 0u + hexstep_plan_pulse[i].step_high * 0u;
+  return n + HEXSTEP_PLAN_CLOCK_HZ * 0u + HEXSTEP_PLAN_AXIS_MASK * 0u;
+}
+EOF
+      check "plan c $h: compiles when used (cc -std=c99 -Wall -Wextra -pedantic -Werror)" \
+        "$CC_BIN" -std=c99 -Wall -Wextra -pedantic -Werror -c "$TMP/${h}_use.c" -o "$TMP/${h}_use.o"
+    done
+    check "plan c: axis 3 row is 700 steps, dir 0" grep -q '^  {700u, 0u, UINT64_C(' "$TMP/plan1.h"
+    check "plan c: axis mask 0x08" grep -q '^#define HEXSTEP_PLAN_AXIS_MASK 0x08u' "$TMP/plan1.h"
+    check "plan c: pulse row of axis 3" grep -q '^  {4u, 1u, 0u, 0u, 0u, 0u}, /\* axis 3 \*/' "$TMP/plan1.h"
+    check "plan c line: axis mask 0x3F" grep -q '^#define HEXSTEP_PLAN_AXIS_MASK 0x3Fu' "$TMP/plan6.h"
+    ;;
+  plan_pipe)
+    # hexstep plan ... --format job | hexstep simulate -: exactly |total| steps, all in the
+    # planned direction on the planned axis, ending at the planned signed position; on the model
+    # and (if built) the RTL, with identical output.
+    engines=model
+    [ "$HAVE_RTL" = 1 ] && engines="model rtl"
+    for move in "--steps -300 --max-speed 200000 --accel 2e8" \
+                "--distance 0.75 --unit rev --steps-per-rev 400 --max-speed 400 --accel 400000 --step-high 3 --step-low 2 --dir-setup 2 --dir-hold 1 --axis 4" \
+                "--distance -2.5 --unit mm --steps-per-mm 80 --max-speed 1000 --accel 1e6 --start-speed 50 --axis 1" \
+                "--steps 250 --max-speed 100000 --accel 1e9 --time 0.004 --axis 5"; do
+      # shellcheck disable=SC2086
+      run pj plan $move
+      total=$(grep -o '"total": *-\{0,1\}[0-9]*' "$TMP/pj.out" | sed 's/.*: *//')
+      axis=$(grep -o '"axis": *[0-9]' "$TMP/pj.out" | head -n 1 | sed 's/.*: *//')
+      abs=${total#-}
+      dir=1
+      [ "$total" -lt 0 ] && dir=0
+      for eng in $engines; do
+        # shellcheck disable=SC2086
+        "$HEXSTEP" plan $move --format job 2>"$TMP/pp.err" | "$HEXSTEP" simulate - --engine "$eng" >"$TMP/pp_$eng.out" 2>>"$TMP/pp.err"
+        check "plan pipe $eng [$move]: exit 0" test $? -eq 0 -a ! -s "$TMP/pp.err"
+        check_csv "$TMP/pp_$eng.out" "$abs" 100000000 "plan pipe $eng [$move]"
+        check "plan pipe $eng [$move]: axis $axis, dir $dir" awk -F, -v a="$axis" -v d="$dir" \
+          'NR > 1 && ($1 != a || $5 != d) { exit 1 }' "$TMP/pp_$eng.out"
+        # shellcheck disable=SC2086
+        "$HEXSTEP" plan $move --format job | "$HEXSTEP" simulate - --engine "$eng" --summary >"$TMP/ps_$eng.out"
+        pos=$(awk -v a="$axis" '$1 == a {print $4}' "$TMP/ps_$eng.out")
+        check "plan pipe $eng [$move]: final position $pos == planned total $total" test "$pos" = "$total"
+      done
+      [ "$HAVE_RTL" = 1 ] && check "plan pipe [$move]: rtl output identical to model" cmp -s "$TMP/pp_model.out" "$TMP/pp_rtl.out"
+    done
+    ;;
+  plan_line)
+    # A six-axis line from a request file: every axis ends at its planned position, and all
+    # moving axes finish together (last STEP edges within 1 % of the run).
+    run pl plan --job "$TMP/line6.json" --format csv
+    check "plan line: exit 0" test "$RC" -eq 0
+    engines=model
+    [ "$HAVE_RTL" = 1 ] && engines="model rtl"
+    for eng in $engines; do
+      "$HEXSTEP" plan --job "$TMP/line6.json" --format job | "$HEXSTEP" simulate - --engine "$eng" --summary >"$TMP/pls.out"
+      check "plan line $eng: exit 0" test $? -eq 0
+      check "plan line $eng: positions equal the planned totals" awk -F, '
+        FNR == NR { if (FNR > 1) want[$1] = $4; next }
+        $1 ~ /^[0-5]$/ { seen++; if ($4 != want[$1]) exit 1 }
+        END { if (seen != 6) exit 1 }' "$TMP/pl.out" <(sed 's/^ *//; s/  */,/g' "$TMP/pls.out")
+      check "plan line $eng: axes finish together" awk '
+        $1 ~ /^[0-4]$/ { c = $5; if (n == 0 || c < lo) lo = c; if (n == 0 || c > hi) hi = c; n++ }
+        END { if (n != 5 || hi - lo > hi / 100) exit 1 }' "$TMP/pls.out"
+    done
+    ;;
+  plan_help)
+    run ph plan --help
+    check "plan --help: exit 0" test "$RC" -eq 0
+    for flag in --steps --distance --unit --steps-per-rev --steps-per-mm --pitch-mm --start-speed \
+                --end-speed --max-speed --accel --decel --ratio --time --clock-hz --axis --job \
+                --format --out --step-high --step-low --dir-setup --dir-hold 'UNIT/s^2' 'clock cycles'; do
+      check "plan --help: explains $flag" grep -qF -- "$flag" "$TMP/ph.out"
+    done
+    check "plan --help: CSV header" grep -qF "$PLAN_CSV_HEADER" "$TMP/ph.out"
+    # Exit statuses and the empty output of the two plan error classes (details: test_plan.cpp).
+    run pe plan --steps 100 --max-speed -1 --accel 1000
+    check "plan error: exit 2, stdout empty, names --max-speed" \
+      test "$RC" -eq 2 -a ! -s "$TMP/pe.out" -a "$(grep -c '^hexstep: error: --max-speed: ' "$TMP/pe.err")" -eq 1
+    run pi plan --steps 3000 --max-speed 1000 --accel 1000 --time 3.9 --out "$TMP/pi.json"
+    check "plan infeasible: exit 3, nothing written, names --time and the minimum" \
+      test "$RC" -eq 3 -a ! -s "$TMP/pi.out" -a ! -e "$TMP/pi.json" -a "$(grep -c '^hexstep: error: --time: .*minimum achievable time 4 s' "$TMP/pi.err")" -eq 1
     ;;
   *)
     bad "unknown case $c"
