@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "hexstep/job.hpp"
 #include "hexstep/job_io.hpp"
 #include "hexstep/planner.hpp"
+#include "hexstep/strict_json.hpp"
 
 namespace hexstep::cli {
 
@@ -352,54 +352,11 @@ bool bool_field(const json& v, const std::string& path) {
 
 // JSON with duplicate keys refused (the path of the second one named).
 json parse_request_json(const std::string& text) {
-  struct Frame {
-    bool array = false;
-    size_t index = 0;
-    std::string key;
-    std::set<std::string> keys;
-  };
-  std::vector<Frame> st;
-  auto path_of = [&st](const std::string& key) {
-    std::string p;
-    for (size_t i = 0; i + 1 < st.size(); ++i) {
-      if (st[i].array) p += "[" + std::to_string(st[i].index) + "]";
-      else p += (p.empty() ? "" : ".") + st[i].key;
-    }
-    return p + (p.empty() ? "" : ".") + key;
-  };
-  auto cb = [&](int, json::parse_event_t ev, json& parsed) -> bool {
-    switch (ev) {
-      case json::parse_event_t::object_start: st.push_back(Frame{}); break;
-      case json::parse_event_t::array_start: st.push_back(Frame{true, 0, {}, {}}); break;
-      case json::parse_event_t::key: {
-        Frame& f = st.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second)
-          throw RequestError(path_of(f.key), "duplicate field (each field may appear only once)");
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        st.pop_back();
-        if (!st.empty() && st.back().array) ++st.back().index;
-        break;
-      case json::parse_event_t::value:
-        if (!st.empty() && st.back().array) ++st.back().index;
-        break;
-    }
-    return true;
-  };
   try {
-    return json::parse(text, cb);
-  } catch (const json::exception& e) {
-    std::string what = e.what();
-    const size_t tag = what.find("] ");
-    if (what.rfind("[json.exception.", 0) == 0 && tag != std::string::npos) what = what.substr(tag + 2);
-    for (char& c : what)
-      if (c == '\n' || c == '\r') c = ' ';
-    const auto* pe = dynamic_cast<const json::parse_error*>(&e);
-    throw std::runtime_error("malformed JSON" + (pe ? " at byte " + std::to_string(pe->byte) : std::string()) +
-                             ": " + what);
+    return hexstep::parse_strict_json(text);
+  } catch (const hexstep::StrictJsonError& e) {
+    if (e.path().empty()) throw std::runtime_error(e.what());
+    throw RequestError(e.path(), e.what());
   }
 }
 

@@ -4,12 +4,13 @@
 
 #include <cstdint>
 #include <limits>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "hexstep/strict_json.hpp"
 
 namespace hexstep {
 
@@ -218,57 +219,12 @@ PulseConfig read_pulse(const json& j, const std::string& path, const Widths& w) 
   return p;
 }
 
-// Path of the innermost open container during parsing, for the duplicate-key check.
-struct Frame {
-  bool array = false;
-  size_t index = 0;  // arrays: elements completed so far
-  std::string key;   // objects: the last key read
-  std::set<std::string> keys;
-};
-
-std::string frame_path(const std::vector<Frame>& st, const std::string& key) {
-  std::string p;
-  for (size_t i = 0; i + 1 < st.size(); ++i) {
-    if (st[i].array) p += "[" + std::to_string(st[i].index) + "]";
-    else p += (p.empty() ? "" : ".") + st[i].key;
-  }
-  return p + (p.empty() ? "" : ".") + key;
-}
-
 json parse_json(const std::string& text) {
-  std::vector<Frame> st;
-  auto cb = [&st](int, json::parse_event_t ev, json& parsed) -> bool {
-    switch (ev) {
-      case json::parse_event_t::object_start: st.push_back(Frame{}); break;
-      case json::parse_event_t::array_start: st.push_back(Frame{true, 0, {}, {}}); break;
-      case json::parse_event_t::key: {
-        Frame& f = st.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second)
-          fail(frame_path(st, f.key), "duplicate field (each field may appear only once)");
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        st.pop_back();
-        if (!st.empty() && st.back().array) ++st.back().index;
-        break;
-      case json::parse_event_t::value:
-        if (!st.empty() && st.back().array) ++st.back().index;
-        break;
-    }
-    return true;
-  };
   try {
-    return json::parse(text, cb);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    // "[json.exception.parse_error.101] parse error at line 1, column 2: ..." -> drop the tag.
-    const size_t tag = what.find("] ");
-    if (what.rfind("[json.exception.", 0) == 0 && tag != std::string::npos) what = what.substr(tag + 2);
-    for (char& c : what)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw JobError("malformed JSON at byte " + std::to_string(e.byte) + ": " + what);
+    return parse_strict_json(text);
+  } catch (const StrictJsonError& e) {
+    if (e.path().empty()) throw JobError(e.what());
+    fail(e.path(), e.what());
   }
 }
 
