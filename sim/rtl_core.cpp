@@ -4,13 +4,14 @@
 #include "rtl_core.hpp"
 
 #include <array>
-#include <atomic>
 #include <cstdlib>
 #include <string>
 
 #include "Vhexstep_core.h"
 #include "verilated.h"
 #include "verilated_fst_c.h"
+
+#include "trace.hpp"
 
 namespace hexstep {
 
@@ -46,7 +47,6 @@ template <typename T>
 uint64_t get(const T& v, unsigned lsb, unsigned width) {
   return (static_cast<uint64_t>(v) >> lsb) & Widths::mask(width);
 }
-std::atomic<int> g_trace_seq{0};
 }  // namespace
 
 bool same_inputs(const AxisMove& a, const AxisMove& b) {
@@ -73,16 +73,7 @@ struct RtlCore::Impl {
 
 RtlCore::RtlCore(const std::string& trace_path) : impl_(new Impl) {
   impl_->top.reset(new Vhexstep_core(&impl_->ctx, "hexstep_core"));
-  std::string path = trace_path;
-  const char* env = std::getenv("TRACE");
-  if (path.empty() && env && std::string(env) == "1")
-    path = "hexstep_" + std::to_string(g_trace_seq++) + ".fst";
-  if (!path.empty()) {
-    impl_->ctx.traceEverOn(true);
-    impl_->trace.reset(new VerilatedFstC);
-    impl_->top->trace(impl_->trace.get(), 99);
-    impl_->trace->open(path.c_str());
-  }
+  impl_->trace = open_trace(impl_->ctx, *impl_->top, trace_path, "hexstep");
   reset();
 }
 

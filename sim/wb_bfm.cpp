@@ -2,7 +2,6 @@
 // hexstep: Wishbone master BFM for the Verilated rtl/hexstep_top.v (see wb_bfm.hpp).
 #include "wb_bfm.hpp"
 
-#include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -10,10 +9,11 @@
 #include "verilated.h"
 #include "verilated_fst_c.h"
 
+#include "trace.hpp"
+
 namespace hexstep {
 
 namespace {
-std::atomic<int> g_trace_seq{0};
 constexpr unsigned kAckTimeout = 64;
 }  // namespace
 
@@ -25,16 +25,7 @@ struct WbTop::Impl {
 
 WbTop::WbTop(uint32_t seed, const std::string& trace_path) : impl_(new Impl), rng_(seed) {
   impl_->top.reset(new Vhexstep_top(&impl_->ctx, "hexstep_top"));
-  std::string path = trace_path;
-  const char* env = std::getenv("TRACE");
-  if (path.empty() && env && std::string(env) == "1")
-    path = "wb_" + std::to_string(g_trace_seq++) + ".fst";
-  if (!path.empty()) {
-    impl_->ctx.traceEverOn(true);
-    impl_->trace.reset(new VerilatedFstC);
-    impl_->top->trace(impl_->trace.get(), 99);
-    impl_->trace->open(path.c_str());
-  }
+  impl_->trace = open_trace(impl_->ctx, *impl_->top, trace_path, "wb");
   reset();
 }
 
