@@ -12,6 +12,7 @@ APT_PKGS=(
   libgtest-dev googletest                        # unit and co-simulation tests
   libcli11-dev nlohmann-json3-dev                # CLI argument parsing, JSON jobs
   libbenchmark-dev                               # throughput benchmarks
+  gcc-riscv64-unknown-elf                        # firmware driver cross compile (ctest fw_cross_compile)
   python3 python3-venv python3-pip               # the .venv for YoWASP tools
 )
 # Python packages pinned to the versions the project was tested with.
