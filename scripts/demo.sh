@@ -28,3 +28,19 @@ else
   diff "$out/model.csv" "$out/rtl.csv" | head -20 >&2
   exit 1
 fi
+
+echo
+echo "== From physical limits: hexstep plan | hexstep simulate =="
+echo "8 mm on an 8 mm lead screw, 400 steps/rev, 50 mm/s, 500 mm/s^2, 12 MHz core clock"
+echo "(by hand: 400 steps, 125 up at 25,000 steps/s^2 in 0.1 s, 150 at 2,500 steps/s, 125 down: 0.26 s):"
+"$HEXSTEP" plan --distance 8 --unit mm --pitch-mm 8 --steps-per-rev 400 --max-speed 50 \
+  --accel 500 --clock-hz 12000000 --format job > "$out/plan.json"
+"$HEXSTEP" simulate "$out/plan.json" --engine model --summary
+"$HEXSTEP" simulate "$out/plan.json" --engine model > "$out/pm.csv"
+"$HEXSTEP" simulate "$out/plan.json" --engine rtl > "$out/pr.csv"
+if cmp -s "$out/pm.csv" "$out/pr.csv"; then
+  echo "RTL == model on the planned move ($(($(wc -l < "$out/pr.csv") - 1)) STEP edges)."
+else
+  echo "MISMATCH between RTL and model on the planned move" >&2
+  exit 1
+fi
