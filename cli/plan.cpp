@@ -268,60 +268,22 @@ class RequestError : public std::runtime_error {
       : std::runtime_error(path + ": " + msg) {}
 };
 
-std::string got(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "got null";
-    case json::value_t::boolean: return v.get<bool>() ? "got true" : "got false";
-    case json::value_t::object: return "got an object";
-    case json::value_t::array: return "got an array";
-    case json::value_t::string: {
-      std::string s = v.dump();
-      if (s.size() > 42) s = s.substr(0, 40) + "...\"";
-      return "got the string " + s;
-    }
-    default: return "got " + v.dump();
-  }
+[[noreturn]] void request_fail(const std::string& path, const std::string& msg) {
+  throw RequestError(path, msg);
 }
 
-// One JSON object of the request: type check, unknown fields, lookups.
-class Obj {
+// One JSON object of the request: type check and unknown fields refused on construction.
+class Obj : public hexstep::JsonObject {
  public:
   Obj(const json& j, std::string path, const char* what, std::vector<const char*> fields)
-      : j_(j), path_(std::move(path)), fields_(std::move(fields)) {
-    if (!j_.is_object()) throw RequestError(path_.empty() ? "(top level)" : path_, std::string("must be ") + what + ", " + got(j_));
-    for (auto it = j_.begin(); it != j_.end(); ++it) {
-      bool known = false;
-      for (const char* f : fields_) known = known || it.key() == f;
-      if (!known) {
-        std::string list;
-        for (const char* f : fields_) list += (list.empty() ? "" : ", ") + std::string(f);
-        std::string key = it.key();
-        for (char& c : key)
-          if (static_cast<unsigned char>(c) < 0x20) c = '?';
-        throw RequestError(sub(key), "unknown field (accepted here: " + list + ")");
-      }
-    }
+      : JsonObject(j, std::move(path), what, std::move(fields), &request_fail) {
+    reject_unknown();
   }
-  const json* opt(const char* key) const {
-    auto it = j_.find(key);
-    return it == j_.end() ? nullptr : &*it;
-  }
-  const json& req(const char* key, const std::string& accepts) const {
-    const json* v = opt(key);
-    if (!v) throw RequestError(sub(key), "required field is missing; it " + accepts);
-    return *v;
-  }
-  std::string sub(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
- private:
-  const json& j_;
-  std::string path_;
-  std::vector<const char*> fields_;
 };
 
 real num_field(const json& v, const std::string& path, const std::string& unit) {
   if (!v.is_number())
-    throw RequestError(path, "must be a number" + (unit.empty() ? "" : " in " + unit) + ", " + got(v));
+    throw RequestError(path, "must be a number" + (unit.empty() ? "" : " in " + unit) + ", " + hexstep::json_got(v));
   return v.get<real>();
 }
 
@@ -341,13 +303,13 @@ int64_t int_field(const json& v, const std::string& path, int64_t lo, int64_t hi
     if (x < lo || x > hi) throw RequestError(path, range + ", got " + v.dump());
     return x;
   }
-  throw RequestError(path, range + ", " + got(v));
+  throw RequestError(path, range + ", " + hexstep::json_got(v));
 }
 
 bool bool_field(const json& v, const std::string& path) {
   if (v.is_boolean()) return v.get<bool>();
   if (v.is_number_integer() && (v.get<int64_t>() == 0 || v.get<int64_t>() == 1)) return v.get<int64_t>() == 1;
-  throw RequestError(path, "must be true or false (or 1 or 0), " + got(v));
+  throw RequestError(path, "must be true or false (or 1 or 0), " + hexstep::json_got(v));
 }
 
 // JSON with duplicate keys refused (the path of the second one named).
@@ -386,7 +348,7 @@ AxisSpec read_axis(const json& j, const std::string& path, const std::string& fi
   s.axis = static_cast<unsigned>(
       int_field(o.req("axis", "must be an integer in [0, 5]"), o.sub("axis"), 0, kNumAxes - 1, ""));
   if (const json* v = o.opt("unit")) {
-    if (!v->is_string()) throw RequestError(o.sub("unit"), "must be one of steps, rev, deg, rad, mm, " + got(*v));
+    if (!v->is_string()) throw RequestError(o.sub("unit"), "must be one of steps, rev, deg, rad, mm, " + hexstep::json_got(*v));
     s.unit = guarded(s, "", [&] { return plan::parse_unit(v->get<std::string>()); });
   }
   const std::string u = plan::unit_name(s.unit);
@@ -432,7 +394,7 @@ Request parse_request(const std::string& text, const std::string& file) {
     const std::string accepts = std::string("must be the string \"") + kRequestFormat + "\"";
     const json& f = o.req("format", accepts);
     if (!f.is_string() || f.get_ref<const std::string&>() != kRequestFormat)
-      throw RequestError("format", accepts + " (this is not a hexstep planning request?), " + got(f));
+      throw RequestError("format", accepts + " (this is not a hexstep planning request?), " + hexstep::json_got(f));
   }
   int_field(o.req("version", "must be an integer in [1, 1]"), "version", 1, 1,
             " (the only version this hexstep reads)");
@@ -441,12 +403,12 @@ Request parse_request(const std::string& text, const std::string& file) {
     r.clock_hz = static_cast<uint64_t>(int_field(*v, "clock_hz", 1, static_cast<int64_t>(kClockMax), " Hz"));
   if (const json* v = o.opt("mode")) {
     if (!v->is_string() || (*v != "independent" && *v != "line"))
-      throw RequestError("mode", "must be \"independent\" or \"line\", " + got(*v));
+      throw RequestError("mode", "must be \"independent\" or \"line\", " + hexstep::json_got(*v));
     r.line = *v == "line";
   }
   const std::string accepts = "must be an array of 1 to 6 axis objects";
   const json& axes = o.req("axes", accepts);
-  if (!axes.is_array()) throw RequestError("axes", accepts + ", " + got(axes));
+  if (!axes.is_array()) throw RequestError("axes", accepts + ", " + hexstep::json_got(axes));
   if (axes.empty() || axes.size() > kNumAxes)
     throw RequestError("axes", accepts + ", got " + std::to_string(axes.size()) + " entries");
   std::array<int, kNumAxes> seen;

@@ -28,24 +28,6 @@ constexpr uint64_t kU32Max = std::numeric_limits<uint32_t>::max();
   throw JobError(path + ": " + msg);
 }
 
-// "got ..." text for a JSON value, kept short and on one line.
-std::string got(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "got null";
-    case json::value_t::boolean: return v.get<bool>() ? "got true" : "got false";
-    case json::value_t::object: return "got an object";
-    case json::value_t::array: return "got an array";
-    case json::value_t::number_float:
-      return "got " + v.dump() + " (a floating-point number, not an integer literal)";
-    case json::value_t::string: {
-      std::string s = v.dump();  // quoted and escaped, so one line
-      if (s.size() > 42) s = s.substr(0, 40) + "...\"";
-      return "got the string " + s;
-    }
-    default: return "got " + v.dump();
-  }
-}
-
 std::string range_text(uint64_t lo, uint64_t hi) {
   return "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
 }
@@ -99,9 +81,9 @@ uint64_t get_uint(const json& v, const std::string& path, uint64_t lo, uint64_t 
                   const std::string& note = "") {
   uint64_t x = 0;
   switch (to_u64(v, x)) {
-    case IntParse::kNotInt: fail(path, range_text(lo, hi) + note + ", " + got(v));
+    case IntParse::kNotInt: fail(path, range_text(lo, hi) + note + ", " + json_got(v));
     case IntParse::kOverflow:
-      fail(path, range_text(lo, hi) + note + ", " + got(v) + " (beyond 64 bits)");
+      fail(path, range_text(lo, hi) + note + ", " + json_got(v) + " (beyond 64 bits)");
     case IntParse::kOk: break;
   }
   if (x < lo || x > hi) fail(path, range_text(lo, hi) + note + ", got " + std::to_string(x));
@@ -114,46 +96,14 @@ bool get_bool(const json& v, const std::string& path, const char* accepts = kBoo
   if (v.is_boolean()) return v.get<bool>();
   uint64_t x = 0;
   if (to_u64(v, x) == IntParse::kOk && x <= 1) return x == 1;
-  fail(path, std::string(accepts) + ", " + got(v));
+  fail(path, std::string(accepts) + ", " + json_got(v));
 }
 
-// One JSON object being read: type check, unknown and missing fields.
-class Obj {
+// One JSON object of a job file; errors are JobErrors.
+class Obj : public JsonObject {
  public:
   Obj(const json& j, std::string path, const char* what, std::vector<const char*> fields)
-      : j_(j), path_(std::move(path)), fields_(std::move(fields)) {
-    if (!j_.is_object()) fail(path_, std::string("must be ") + what + ", " + got(j_));
-  }
-  void reject_unknown() const {
-    for (auto it = j_.begin(); it != j_.end(); ++it) {
-      bool known = false;
-      for (const char* f : fields_) known = known || it.key() == f;
-      if (!known) {
-        std::string list;
-        for (const char* f : fields_) list += (list.empty() ? "" : ", ") + std::string(f);
-        std::string key = it.key();
-        for (char& c : key)
-          if (static_cast<unsigned char>(c) < 0x20) c = '?';  // keep the message one line
-        fail(sub(key), "unknown field (accepted here: " + list + ")");
-      }
-    }
-  }
-  const json* opt(const char* key) const {
-    auto it = j_.find(key);
-    return it == j_.end() ? nullptr : &*it;
-  }
-  // `accepts` completes "it ..." in the message for a missing field.
-  const json& req(const char* key, const std::string& accepts) const {
-    const json* v = opt(key);
-    if (!v) fail(sub(key), "required field is missing; it " + accepts);
-    return *v;
-  }
-  std::string sub(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
- private:
-  const json& j_;
-  std::string path_;
-  std::vector<const char*> fields_;
+      : JsonObject(j, std::move(path), what, std::move(fields), &fail) {}
 };
 
 struct UField {
@@ -275,13 +225,13 @@ std::string describe_move_error(uint32_t err, const AxisMove& m, const std::stri
 
 Job parse_job(const std::string& text, const Widths& w) {
   const json root = parse_json(text);
-  if (!root.is_object()) fail("(top level)", "must be a JSON object, " + got(root));
+  if (!root.is_object()) fail("(top level)", "must be a JSON object, " + json_got(root));
   Obj o(root, "", "a JSON object", {"format", "version", "clock_hz", "axes"});
   {
     const std::string accepts = std::string("must be the string \"") + kFormat + "\"";
     const json& f = o.req("format", accepts);
     if (!f.is_string() || f.get_ref<const std::string&>() != kFormat)
-      fail("format", accepts + " (this is not a hexstep job file?), " + got(f));
+      fail("format", accepts + " (this is not a hexstep job file?), " + json_got(f));
   }
   get_uint(o.req("version", range_text(kVersion, kVersion)), "version", kVersion, kVersion,
            " (the only version this hexstep reads)");
@@ -292,7 +242,7 @@ Job parse_job(const std::string& text, const Widths& w) {
 
   const char* const axes_accepts = "must be an array of axis objects (at most 6)";
   const json& axes = o.req("axes", axes_accepts);
-  if (!axes.is_array()) fail("axes", std::string(axes_accepts) + ", " + got(axes));
+  if (!axes.is_array()) fail("axes", std::string(axes_accepts) + ", " + json_got(axes));
   if (axes.size() > kNumAxes)
     fail("axes", std::string(axes_accepts) + ", got " + std::to_string(axes.size()) + " entries");
   std::array<int, kNumAxes> seen_at;
@@ -311,7 +261,7 @@ Job parse_job(const std::string& text, const Widths& w) {
     if (const json* p = a.opt("pulse")) aj.pulse = read_pulse(*p, a.sub("pulse"), w);
     const char* const moves_accepts = "must be an array of move objects (may be empty)";
     const json& moves = a.req("moves", moves_accepts);
-    if (!moves.is_array()) fail(a.sub("moves"), std::string(moves_accepts) + ", " + got(moves));
+    if (!moves.is_array()) fail(a.sub("moves"), std::string(moves_accepts) + ", " + json_got(moves));
     for (size_t k = 0; k < moves.size(); ++k)
       aj.moves.push_back(read_move(moves[k], a.sub("moves") + "[" + std::to_string(k) + "]", w));
   }

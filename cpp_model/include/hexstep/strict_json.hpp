@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: JSON parsing for the project's input files (jobs, planning requests): nlohmann-json
-// with duplicate keys refused and errors reduced to one line. Needs nlohmann_json.
+// hexstep: JSON reading for the project's input files (jobs, planning requests): nlohmann-json
+// with duplicate keys refused, one-line errors that name the field's path, and an object reader
+// that refuses unknown fields. Needs nlohmann_json.
 #pragma once
 
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -77,5 +79,73 @@ inline nlohmann::json parse_strict_json(const std::string& text) {
                                   (pe ? " at byte " + std::to_string(pe->byte) : std::string()) + ": " + what);
   }
 }
+
+// "got ..." text for a JSON value in an error message, kept short and on one line.
+inline std::string json_got(const nlohmann::json& v) {
+  using json = nlohmann::json;
+  switch (v.type()) {
+    case json::value_t::null: return "got null";
+    case json::value_t::boolean: return v.get<bool>() ? "got true" : "got false";
+    case json::value_t::object: return "got an object";
+    case json::value_t::array: return "got an array";
+    case json::value_t::number_float:
+      return "got " + v.dump() + " (a floating-point number, not an integer literal)";
+    case json::value_t::string: {
+      std::string s = v.dump();  // quoted and escaped, so one line
+      if (s.size() > 42) s = s.substr(0, 40) + "...\"";
+      return "got the string " + s;
+    }
+    default: return "got " + v.dump();
+  }
+}
+
+// Reports an error at a JSON path; must throw (each file format has its own error type).
+using JsonFail = void (*)(const std::string& path, const std::string& msg);
+
+// One JSON object being read: type check, unknown and missing fields, paths of its members.
+class JsonObject {
+ public:
+  JsonObject(const nlohmann::json& j, std::string path, const char* what,
+             std::vector<const char*> fields, JsonFail fail)
+      : j_(j), path_(std::move(path)), fields_(std::move(fields)), fail_(fail) {
+    if (!j_.is_object())
+      error(path_.empty() ? "(top level)" : path_, std::string("must be ") + what + ", " + json_got(j_));
+  }
+  void reject_unknown() const {
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      bool known = false;
+      for (const char* f : fields_) known = known || it.key() == f;
+      if (!known) {
+        std::string list;
+        for (const char* f : fields_) list += (list.empty() ? "" : ", ") + std::string(f);
+        std::string key = it.key();
+        for (char& c : key)
+          if (static_cast<unsigned char>(c) < 0x20) c = '?';  // keep the message one line
+        error(sub(key), "unknown field (accepted here: " + list + ")");
+      }
+    }
+  }
+  const nlohmann::json* opt(const char* key) const {
+    auto it = j_.find(key);
+    return it == j_.end() ? nullptr : &*it;
+  }
+  // `accepts` completes "it ..." in the message for a missing field.
+  const nlohmann::json& req(const char* key, const std::string& accepts) const {
+    const nlohmann::json* v = opt(key);
+    if (!v) error(sub(key), "required field is missing; it " + accepts);
+    return *v;
+  }
+  std::string sub(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+ private:
+  [[noreturn]] void error(const std::string& path, const std::string& msg) const {
+    fail_(path, msg);
+    throw std::logic_error("JsonFail returned");
+  }
+  const nlohmann::json& j_;
+  std::string path_;
+  std::vector<const char*> fields_;
+  JsonFail fail_;
+};
 
 }  // namespace hexstep
