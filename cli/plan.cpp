@@ -772,7 +772,7 @@ CLI::App* add_plan(CLI::App& app, PlanOptions& o) {
       "the flags, or up to six from a request file (--job). Method: docs/PLANNER.md; output "
       "formats: docs/FORMATS.md.");
   o.sub = sub;
-  auto opt = [&](const char* name, std::string& dst, const char* text, const char* help) {
+  auto opt = [&](const char* name, std::string& dst, const char* text, const std::string& help) {
     return sub->add_option(name, dst, help)->option_text(text);
   };
   sub->option_defaults()->group("Move");
@@ -811,12 +811,16 @@ CLI::App* add_plan(CLI::App& app, PlanOptions& o) {
   opt("--clock-hz", o.clock_hz, "F",
       "Clock frequency of the core in Hz, an integer in [1, 10000000000]; the registers depend on "
       "it. Default: 100000000 (or the request file's clock_hz)");
-  opt("--step-high", o.step_high, "C", "STEP pulse high time in clock cycles, 0..4095 (0 acts as 1). Default: 1");
+  const std::string pulse_range = "0.." + std::to_string(hexstep::Widths{}.pulse_mask());
+  opt("--step-high", o.step_high, "C",
+      "STEP pulse high time in clock cycles, " + pulse_range + " (0 acts as 1). Default: 1");
   opt("--step-low", o.step_low, "C",
-      "Minimum STEP low time in clock cycles, 0..4095 (0 acts as 1). Default: 1. The peak speed "
-      "must not exceed F / (step-high + step-low) steps/s");
-  opt("--dir-setup", o.dir_setup, "C", "DIR setup time before a STEP rising edge, clock cycles, 0..4095. Default: 0");
-  opt("--dir-hold", o.dir_hold, "C", "DIR hold time after a STEP rising edge, clock cycles, 0..4095. Default: 0");
+      "Minimum STEP low time in clock cycles, " + pulse_range + " (0 acts as 1). Default: 1. The "
+      "peak speed must not exceed F / (step-high + step-low) steps/s");
+  opt("--dir-setup", o.dir_setup, "C",
+      "DIR setup time before a STEP rising edge, clock cycles, " + pulse_range + ". Default: 0");
+  opt("--dir-hold", o.dir_hold, "C",
+      "DIR hold time after a STEP rising edge, clock cycles, " + pulse_range + ". Default: 0");
   sub->option_defaults()->group("Input and output");
   opt("--job", o.job, "FILE",
       "Plan up to six axes from a planning request file (JSON, format \"hexstep-plan-request\", "
