@@ -43,3 +43,7 @@ demo: build
 
 clean:
 	rm -rf $(BUILD)
+
+# Further jobs (synth, bench, formal, fuzz, soak, ...) live in mk/<job>.mk; a file there may add
+# prerequisites to `test` (bounded slices only).
+-include $(wildcard mk/*.mk)

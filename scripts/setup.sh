@@ -22,6 +22,17 @@ PIP_PKGS=(
   "systemrdl-compiler==1.33.0"
 )
 
+# Each concern adds what it needs in scripts/deps/<concern>.apt and <concern>.pip
+# (one package per line, '#' comments), so the lists stay next to their reason.
+shopt -s nullglob
+for f in scripts/deps/*.apt; do
+  while read -r p _; do [ -n "$p" ] && [ "${p#\#}" = "$p" ] && APT_PKGS+=("$p"); done < "$f"
+done
+for f in scripts/deps/*.pip; do
+  while read -r p _; do [ -n "$p" ] && [ "${p#\#}" = "$p" ] && PIP_PKGS+=("$p"); done < "$f"
+done
+shopt -u nullglob
+
 missing=()
 for p in "${APT_PKGS[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
