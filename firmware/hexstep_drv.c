@@ -119,8 +119,10 @@ static void wr64(const hexstep_dev_t *dev, uint32_t lo_off, uint64_t v) {
 hexstep_rc_t hexstep_load_move(hexstep_dev_t *dev, unsigned axis, const hexstep_move_t *m) {
   if (!axis_ok(dev, axis) || !m) return HEXSTEP_ERR_ARG;
   if ((m->acc >> 32) > ACC_HI_MASK || (m->dec >> 32) > ACC_HI_MASK) return HEXSTEP_ERR_RANGE;
+  if (m->dir > (HEXSTEP__AXIS_T__DIR__POSITIVE_bm | HEXSTEP__AXIS_T__DIR__JOG_bm))
+    return HEXSTEP_ERR_RANGE;
   wr(dev, A_OFF(axis, STEPS), m->steps);
-  wr(dev, A_OFF(axis, DIR), m->dir ? HEXSTEP__AXIS_T__DIR__POSITIVE_bm : 0u);
+  wr(dev, A_OFF(axis, DIR), m->dir);
   wr64(dev, A_OFF(axis, V_START_LO), m->v_start);
   wr64(dev, A_OFF(axis, V_MAX_LO), m->v_max);
   wr64(dev, A_OFF(axis, V_END_LO), m->v_end);
@@ -178,6 +180,13 @@ hexstep_rc_t hexstep_start(hexstep_dev_t *dev, uint32_t mask) {
 hexstep_rc_t hexstep_abort(hexstep_dev_t *dev, uint32_t mask) {
   if (!mask_ok(dev, mask)) return HEXSTEP_ERR_ARG;
   wr(dev, G_OFF(ABORT), mask);
+  (void)rd(dev, G_OFF(GSTATUS));
+  return HEXSTEP_OK;
+}
+
+hexstep_rc_t hexstep_stop(hexstep_dev_t *dev, uint32_t mask) {
+  if (!mask_ok(dev, mask)) return HEXSTEP_ERR_ARG;
+  wr(dev, G_OFF(STOP), mask);
   (void)rd(dev, G_OFF(GSTATUS));
   return HEXSTEP_OK;
 }

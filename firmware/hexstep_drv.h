@@ -58,10 +58,16 @@ typedef struct {
   void *ctx;              /* passed to read/write */
 } hexstep_dev_t;
 
+/* A jog move (set in hexstep_move_t.dir, written to DIR.jog): ramps from v_start by acc to
+ * v_max and runs until hexstep_stop(); steps, acc_steps, dec_step, dec_frac, v_end and v_dec are
+ * ignored. The core refuses it if v_max is 0, v_start > v_max, v_start and acc are both 0, or
+ * dec is 0. */
+#define HEXSTEP_MOVE_JOG 0x2u
+
 /* One move in the core's register units: same layout as hexstep_plan_move_t. */
 typedef struct {
   uint32_t steps;     /* exact number of steps */
-  uint32_t dir;       /* 1: positive direction, 0: negative */
+  uint32_t dir;       /* bit 0: 1 positive direction, 0 negative; bit 1: HEXSTEP_MOVE_JOG */
   uint64_t v_start;   /* 2^-64 step/cycle */
   uint64_t v_max;     /* 2^-64 step/cycle */
   uint64_t v_end;     /* 2^-64 step/cycle */
@@ -130,6 +136,10 @@ hexstep_rc_t hexstep_queue_free(hexstep_dev_t *dev, unsigned axis, unsigned *fre
 hexstep_rc_t hexstep_start(hexstep_dev_t *dev, uint32_t mask);
 /* Aborts the axes in mask at once (no new STEP edge) and flushes their queues. */
 hexstep_rc_t hexstep_abort(hexstep_dev_t *dev, uint32_t mask);
+/* Controlled stop of the axes in mask: each decelerates by its move's dec from the speed it has
+ * and comes to rest (docs/REGISTERS.md, STOP); their queues are flushed. Poll hexstep_done() or
+ * hexstep_wait() for rest. */
+hexstep_rc_t hexstep_stop(hexstep_dev_t *dev, uint32_t mask);
 
 hexstep_rc_t hexstep_axis_status(hexstep_dev_t *dev, unsigned axis, hexstep_axis_status_t *st);
 /* Axes in mask that are busy or running (queued moves still to come) into *busy_mask. */

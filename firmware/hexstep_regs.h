@@ -21,7 +21,7 @@ extern "C" {
 #define HEXSTEP__VERSION__MINOR_bm 0xff
 #define HEXSTEP__VERSION__MINOR_bp 0
 #define HEXSTEP__VERSION__MINOR_bw 8
-#define HEXSTEP__VERSION__MINOR_reset 0x1
+#define HEXSTEP__VERSION__MINOR_reset 0x2
 #define HEXSTEP__VERSION__MAJOR_bm 0xff00
 #define HEXSTEP__VERSION__MAJOR_bp 8
 #define HEXSTEP__VERSION__MAJOR_bw 8
@@ -81,6 +81,12 @@ extern "C" {
 #define HEXSTEP__IRQ_PENDING__ERR_bw 6
 #define HEXSTEP__IRQ_PENDING__ERR_reset 0x0
 
+// reg - hexstep::STOP
+#define HEXSTEP__STOP__MASK_bm 0x3f
+#define HEXSTEP__STOP__MASK_bp 0
+#define HEXSTEP__STOP__MASK_bw 6
+#define HEXSTEP__STOP__MASK_reset 0x0
+
 // reg - hexstep::axis_t::word32_r
 #define HEXSTEP__AXIS_T__WORD32_R__VAL_bm 0xffffffff
 #define HEXSTEP__AXIS_T__WORD32_R__VAL_bp 0
@@ -92,6 +98,10 @@ extern "C" {
 #define HEXSTEP__AXIS_T__DIR__POSITIVE_bp 0
 #define HEXSTEP__AXIS_T__DIR__POSITIVE_bw 1
 #define HEXSTEP__AXIS_T__DIR__POSITIVE_reset 0x0
+#define HEXSTEP__AXIS_T__DIR__JOG_bm 0x2
+#define HEXSTEP__AXIS_T__DIR__JOG_bp 1
+#define HEXSTEP__AXIS_T__DIR__JOG_bw 1
+#define HEXSTEP__AXIS_T__DIR__JOG_reset 0x0
 
 // reg - hexstep::axis_t::word12_r
 #define HEXSTEP__AXIS_T__WORD12_R__VAL_bm 0xfff
@@ -224,7 +234,8 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t GSTATUS;
     uint32_t IRQ_ENABLE;
     uint32_t IRQ_PENDING;
-    uint8_t RESERVED_1c_ff[0xe4];
+    uint32_t STOP;
+    uint8_t RESERVED_20_ff[0xe0];
     hexstep__axis_t__stride80_t AXIS[6];
 } hexstep_t;
 

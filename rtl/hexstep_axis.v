@@ -14,10 +14,18 @@
 // ones subtract dec, and neither goes below the floor (v_end or, if that is 0, dec). The move
 // ends when cnt reaches steps.
 //
-// Move inputs are sampled only at an accepted start strobe (not busy, no abort, valid move
-// with steps != 0). Pulse timing and polarity inputs are used live every cycle.
+// STOP (stop_i, a strobe while the move runs) is a controlled stop: from the next tick on the
+// axis decelerates from its current speed by dec per tick, ignoring v_dec and the floor, and
+// the move ends on the first such tick whose old speed is below dec (the speed would reach or
+// cross zero), or at once on the next tick if dec is 0; it also still ends at N steps. No step
+// is generated beyond the position the decelerating motion reaches.
+// A jog move (jog_i at the start) ignores steps, acc_steps, dec_step and dec_frac: it ramps
+// from v_start by acc up to v_max, cruises, and ends only by STOP (or ABORT).
 //
-// Reset: all control state is reset (run, phase, dec_first, owed, cnt, done, err and all of
+// Move inputs are sampled only at an accepted start strobe (not busy, no abort, valid move
+// with steps != 0 or jog). Pulse timing and polarity inputs are used live every cycle.
+//
+// Reset: all control state is reset (run, phase, dec_first, stop, jog, owed, cnt, done, err and all of
 // hexstep_pulse). The speed accumulator s_q, the position fraction p_q and the latched move
 // registers (*_q of the "move registers" group) are not reset: each of them is read only while
 // run_q is set, and run_q can only become set at an accepted start, which writes all of them
@@ -54,9 +62,11 @@ module hexstep_axis #(
   input  wire               rst_i,         // synchronous, active high
   input  wire               start_i,       // start strobe (ignored while abort_i is high)
   input  wire               abort_i,       // abort: stop the move and drop owed steps
+  input  wire               stop_i,        // controlled stop strobe (ignored unless running)
   // Move, sampled at an accepted start strobe.
   input  wire [STEP_W-1:0]  steps_i,       // exact number of steps (0: no move, done only)
   input  wire               dir_i,         // 1: positive direction
+  input  wire               jog_i,         // continuous move: runs until STOP
   input  wire [SPEED_W-1:0] v_start_i,     // initial speed
   input  wire [SPEED_W-1:0] v_max_i,       // speed ceiling while accelerating
   input  wire [SPEED_W-1:0] v_end_i,       // speed floor while decelerating (0: floor = dec)
@@ -97,6 +107,7 @@ module hexstep_axis #(
   reg               run_q, run_d;
   reg [1:0]         phase_q, phase_d;
   reg               dec_first_q, dec_first_d;  // the next decelerating tick loads v_dec
+  reg               stop_q, stop_d;        // stopping: decelerate to rest by dec per tick
   reg [OWE_W-1:0]   owed_q, owed_d;        // steps generated but not yet pulsed
   reg [STEP_W-1:0]  cnt_q, cnt_d;          // steps generated in this move
   reg               done_q, done_d;
@@ -114,15 +125,19 @@ module hexstep_axis #(
   reg [STEP_W-1:0]  acc_steps_q, acc_steps_d;
   reg [STEP_W-1:0]  dec_step_q, dec_step_d;
   reg [DFRAC_W-1:0] dec_frac_q, dec_frac_d;
+  reg               jog_q, jog_d;          // jog move: no step count end, no planned decel
 
   // ---- combinational signals ----
   wire              rise;                  // from the pulse stage: a step is pulsed now
-  reg               busy_now, busy_nxt;    // run || owed != 0, before and after this edge
+  // run || owed != 0 before this edge (a wire of registers only: hexstep_wb gates START with
+  // it, so it must not share an always block with start_i) and after it.
+  wire              busy_now = run_q || (owed_q != {OWE_W{1'b0}});
+  reg               busy_nxt;
   reg               accept;                // accepted start: load the move
   // Validation of the move inputs (validate_move()).
-  reg               steps_nz, decel_now, bad;
+  reg               steps_nz, decel_now, bad, bad_jog;
   // Generator.
-  reg               gen, carry, clamp, borrow, dec_trig;
+  reg               gen, carry, clamp, borrow, dec_trig, stop_end, cnt_end;
   reg [SPEED_W:0]   p_sum;                 // p + s, carry in the top bit
   reg [STEP_W-1:0]  cnt_inc;               // cnt + carry
   reg [SPEED_W-1:0] acc_x, dec_x, dec_in_x;  // acc/dec zero-extended to SPEED_W
@@ -135,6 +150,7 @@ module hexstep_axis #(
     run_d = run_q;
     phase_d = phase_q;
     dec_first_d = dec_first_q;
+    stop_d = stop_q;
     owed_d = owed_q;
     cnt_d = cnt_q;
     s_d = s_q;
@@ -150,9 +166,8 @@ module hexstep_axis #(
     acc_steps_d = acc_steps_q;
     dec_step_d = dec_step_q;
     dec_frac_d = dec_frac_q;
+    jog_d = jog_q;
     accept = 1'b0;
-
-    busy_now = run_q || (owed_q != {OWE_W{1'b0}});
 
     // ---- validation of the move at the inputs ----
     steps_nz = (steps_i != {STEP_W{1'b0}});
@@ -165,6 +180,10 @@ module hexstep_axis #(
           ((v_end_i == {SPEED_W{1'b0}}) && (dec_i == {ACC_W{1'b0}})) ||
           (!decel_now && (v_start_i == {SPEED_W{1'b0}}) &&
            ((acc_i == {ACC_W{1'b0}}) || (acc_steps_i == {STEP_W{1'b0}})));
+    bad_jog = (v_max_i == {SPEED_W{1'b0}}) ||
+              (v_start_i > v_max_i) ||
+              ((v_start_i == {SPEED_W{1'b0}}) && (acc_i == {ACC_W{1'b0}})) ||
+              (dec_i == {ACC_W{1'b0}});
 
     // ---- generator, from the old state ----
     gen = run_q && (owed_q != OWE_MAX);
@@ -183,8 +202,11 @@ module hexstep_axis #(
     clamp = (phase_q == PH_ACCEL) && (s_up >= {1'b0, v_max_q});
     borrow = !dec_first_q && s_dn[SPEED_W];
     s_dt = dec_first_q ? v_dec_q : s_dn[SPEED_W-1:0];
+    // Stopping: this tick's old speed is below dec (or dec is 0), so the motion is at rest.
+    stop_end = stop_q && (s_dn[SPEED_W] || (dec_q == {ACC_W{1'b0}}));
+    cnt_end = !jog_q && (cnt_inc == steps_q);
 
-    dec_trig = (phase_q != PH_DECEL) &&
+    dec_trig = !jog_q && (phase_q != PH_DECEL) &&
                (((cnt_inc == dec_step_q) && (p_sum[SPEED_W-1 -: DFRAC_W] >= dec_frac_q)) ||
                 ((cnt_q == dec_step_q) && carry));
 
@@ -194,18 +216,31 @@ module hexstep_axis #(
       if (phase_q == PH_ACCEL) begin
         s_d = clamp ? v_max_q : s_up[SPEED_W-1:0];
       end else if (phase_q == PH_DECEL) begin
-        s_d = (borrow || (s_dt < floor_q)) ? floor_q : s_dt;
+        if (stop_q) begin
+          s_d = s_dn[SPEED_W-1:0];
+        end else begin
+          s_d = (borrow || (s_dt < floor_q)) ? floor_q : s_dt;
+        end
         dec_first_d = 1'b0;
       end
-      if (cnt_inc == steps_q) begin
+      if (cnt_end || stop_end) begin
         run_d = 1'b0;
         phase_d = PH_IDLE;
       end else if (dec_trig) begin
         phase_d = PH_DECEL;
         dec_first_d = 1'b1;
-      end else if ((phase_q == PH_ACCEL) && (clamp || (cnt_inc == acc_steps_q))) begin
+      end else if ((phase_q == PH_ACCEL) &&
+                   (clamp || (!jog_q && (cnt_inc == acc_steps_q)))) begin
         phase_d = PH_CRUISE;
       end
+    end
+
+    // STOP: from the next tick on, decelerate by dec from the speed reached (a stop strobe in
+    // the tick that ends the move, or while not running, does nothing).
+    if (stop_i && run_d && !abort_i) begin
+      stop_d = 1'b1;
+      phase_d = PH_DECEL;
+      dec_first_d = 1'b0;
     end
 
     // owed + carry - rise (a carry needs owed < max, a rise needs owed > 0: no wrap)
@@ -223,9 +258,9 @@ module hexstep_axis #(
     end else if (start_i) begin
       if (busy_now) begin
         err_d = 1'b1;                      // start strobe for a busy axis: refused
-      end else if (!steps_nz || bad) begin
+      end else if (jog_i ? bad_jog : (!steps_nz || bad)) begin
         done_d = 1'b1;                     // empty move (done only) or invalid move
-        err_d = steps_nz;
+        err_d = jog_i || steps_nz;
       end else begin
         accept = 1'b1;
         steps_d = steps_i;
@@ -242,8 +277,14 @@ module hexstep_axis #(
         cnt_d = {STEP_W{1'b0}};
         run_d = 1'b1;
         dec_first_d = 1'b1;
-        phase_d = decel_now ? PH_DECEL :
-                  (acc_steps_i != {STEP_W{1'b0}}) ? PH_ACCEL : PH_CRUISE;
+        stop_d = 1'b0;
+        jog_d = jog_i;
+        if (jog_i) begin
+          phase_d = (acc_i != {ACC_W{1'b0}}) ? PH_ACCEL : PH_CRUISE;
+        end else begin
+          phase_d = decel_now ? PH_DECEL :
+                    (acc_steps_i != {STEP_W{1'b0}}) ? PH_ACCEL : PH_CRUISE;
+        end
       end
     end
 
@@ -259,6 +300,8 @@ module hexstep_axis #(
       run_q <= 1'b0;
       phase_q <= PH_IDLE;
       dec_first_q <= 1'b0;
+      stop_q <= 1'b0;
+      jog_q <= 1'b0;
       owed_q <= {OWE_W{1'b0}};
       cnt_q <= {STEP_W{1'b0}};
       done_q <= 1'b0;
@@ -267,6 +310,8 @@ module hexstep_axis #(
       run_q <= run_d;
       phase_q <= phase_d;
       dec_first_q <= dec_first_d;
+      stop_q <= stop_d;
+      jog_q <= jog_d;
       owed_q <= owed_d;
       cnt_q <= cnt_d;
       done_q <= done_d;

@@ -31,7 +31,7 @@ module hexstep_top #(
   output wire [NAXES-1:0]  dir_o
 );
 
-  wire [NAXES-1:0]         start, abort, dir, step_inv, dir_inv, busy, done, err;
+  wire [NAXES-1:0]         start, abort, stop, jog, dir, step_inv, dir_inv, busy, done, err;
   wire [NAXES*STEP_W-1:0]  steps, acc_steps, dec_step;
   wire [NAXES*SPEED_W-1:0] v_start, v_max, v_end, v_dec;
   wire [NAXES*ACC_W-1:0]   acc, dec;
@@ -48,7 +48,8 @@ module hexstep_top #(
     .wb_cyc_i (wb_cyc_i), .wb_stb_i (wb_stb_i), .wb_we_i (wb_we_i), .wb_adr_i (wb_adr_i),
     .wb_dat_i (wb_dat_i), .wb_sel_i (wb_sel_i), .wb_dat_o (wb_dat_o), .wb_ack_o (wb_ack_o),
     .estop_i (estop_i), .irq_o (irq_o),
-    .start_o (start), .abort_o (abort), .steps_o (steps), .dir_o (dir),
+    .start_o (start), .abort_o (abort), .stop_o (stop), .steps_o (steps), .dir_o (dir),
+    .jog_o (jog),
     .v_start_o (v_start), .v_max_o (v_max), .v_end_o (v_end), .v_dec_o (v_dec),
     .acc_o (acc), .dec_o (dec), .acc_steps_o (acc_steps), .dec_step_o (dec_step),
     .dec_frac_o (dec_frac), .step_high_o (step_high), .step_low_o (step_low),
@@ -62,7 +63,8 @@ module hexstep_top #(
     .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W)
   ) u_core (
     .clk_i (clk_i), .rst_i (rst_i),
-    .start_i (start), .abort_i (abort), .steps_i (steps), .dir_i (dir),
+    .start_i (start), .abort_i (abort), .stop_i (stop), .steps_i (steps), .dir_i (dir),
+    .jog_i (jog),
     .v_start_i (v_start), .v_max_i (v_max), .v_end_i (v_end), .v_dec_i (v_dec),
     .acc_i (acc), .dec_i (dec), .acc_steps_i (acc_steps), .dec_step_i (dec_step),
     .dec_frac_i (dec_frac), .step_high_i (step_high), .step_low_i (step_low),

@@ -19,7 +19,10 @@
 // selected idle axes together and makes them "running"; a running axis starts its next queued
 // move on the edge right after the core's done pulse, with no gap, and stops running when a
 // move ends with an empty queue. ABORT and the latched e-stop abort the core, flush the queue
-// and clear running.
+// and clear running. STOP (registered like START) sends the core's controlled-stop strobe,
+// flushes the queue and clears running on the same edge; the axis then decelerates to rest
+// (busy until it does) and a later START acts only once it is idle. A jog move (DIR.jog) runs
+// until STOP.
 //
 // Reset: synchronous, active high, like hexstep_core. The queue slots are not reset (the core
 // samples them only on a start, which needs a pushed entry).
@@ -55,8 +58,10 @@ module hexstep_wb #(
   // hexstep_core ports
   output wire [NAXES-1:0]         start_o,
   output wire [NAXES-1:0]         abort_o,
+  output wire [NAXES-1:0]         stop_o,
   output wire [NAXES*STEP_W-1:0]  steps_o,
   output wire [NAXES-1:0]         dir_o,
+  output wire [NAXES-1:0]         jog_o,
   output wire [NAXES*SPEED_W-1:0] v_start_o,
   output wire [NAXES*SPEED_W-1:0] v_max_o,
   output wire [NAXES*SPEED_W-1:0] v_end_o,
@@ -82,7 +87,7 @@ module hexstep_wb #(
   // Word indexes (byte offset / 4) of rdl/hexstep.rdl. Global block at 0x000, axis k at
   // 0x100 + k * 0x80, that is 128-byte block number k + 2.
   localparam integer G_ID = 0, G_VERSION = 1, G_START = 2, G_ABORT = 3, G_GSTATUS = 4,
-                     G_IRQ_EN = 5, G_IRQ_PEND = 6;
+                     G_IRQ_EN = 5, G_IRQ_PEND = 6, G_STOP = 7;
   localparam integer W_STEPS = 0, W_DIR = 1, W_V_START = 2, W_V_MAX = 4, W_V_END = 6,
                      W_V_DEC = 8, W_ACC = 10, W_DEC = 12, W_ACC_STEPS = 14, W_DEC_STEP = 15,
                      W_DEC_FRAC = 16, W_CMD = 17, W_STATUS = 18, W_ERR = 19, W_POS_LO = 20,
@@ -92,7 +97,7 @@ module hexstep_wb #(
   localparam integer MW = NW * 32;      // bits of one queued move
   localparam [31:0]  ID_VALUE  = 32'h4858_5354;  // "HXST"
   localparam [7:0]   VER_MAJOR = 8'd0;
-  localparam [7:0]   VER_MINOR = 8'd1;
+  localparam [7:0]   VER_MINOR = 8'd2;
   localparam [NAXES-1:0] ALL = {NAXES{1'b1}};
   // Reset of one axis's config words: STEP_HIGH = STEP_LOW = 1, the others 0.
   localparam [NC*32-1:0] CFG_RESET = {32'd0, 32'd0, 32'd0, 32'd1, 32'd1};
@@ -107,7 +112,7 @@ module hexstep_wb #(
   function [31:0] stg_mask(input integer i);
     case (i)
       W_STEPS, W_ACC_STEPS, W_DEC_STEP:             stg_mask = lo_mask(STEP_W);
-      W_DIR:                                        stg_mask = 32'h1;
+      W_DIR:                                        stg_mask = 32'h3;
       W_V_START, W_V_MAX, W_V_END, W_V_DEC:         stg_mask = lo_mask(SPEED_W);
       W_V_START+1, W_V_MAX+1, W_V_END+1, W_V_DEC+1: stg_mask = hi_mask(SPEED_W);
       W_ACC, W_DEC:                                 stg_mask = lo_mask(ACC_W);
@@ -128,6 +133,7 @@ module hexstep_wb #(
   reg              estop_q, estop_d;          // latched e-stop
   reg  [NAXES-1:0] start_cmd_q, start_cmd_d;  // START written at the last edge
   reg  [NAXES-1:0] abort_cmd_q, abort_cmd_d;  // ABORT written at the last edge
+  reg  [NAXES-1:0] stop_cmd_q, stop_cmd_d;    // STOP written at the last edge
   reg  [NAXES-1:0] run_q, run_d;
   reg  [NAXES*2-1:0]  cnt_q, cnt_d;           // queue entries, 0..2
   reg  [NAXES*3-1:0]  errf_q, errf_d;         // {estop, overrun, move} per axis
@@ -170,14 +176,15 @@ module hexstep_wb #(
 
   // Core control: a start pops the queue head on the edge the core latches it.
   wire [NAXES-1:0] abort_w = abort_cmd_q | {NAXES{estop_q}};
-  // A start: an axis that is not running is idle (running ends with the done pulse, ABORT
-  // ends both at the same edge), so START needs no look at busy_i; a start the core refuses
-  // anyway shows as AXIS_ERR.move. Kept out of the block below, which reads busy_i.
+  // A start: START for an idle axis that is not running (an axis still stopping after STOP is
+  // busy but no longer running: START waits for it), or the chained next move of a running
+  // axis on its done pulse. STOP and abort suppress both. A start the core refuses anyway
+  // shows as AXIS_ERR.move.
   wire [NAXES-1:0] go;
   generate
     for (g = 0; g < NAXES; g = g + 1) begin : g_go
-      assign go[g] = ~abort_w[g] & (cnt_q[g*2 +: 2] != 2'd0) &
-                     ((start_cmd_q[g] & ~run_q[g]) | (run_q[g] & done_i[g]));
+      assign go[g] = ~abort_w[g] & ~stop_cmd_q[g] & (cnt_q[g*2 +: 2] != 2'd0) &
+                     ((start_cmd_q[g] & ~run_q[g] & ~busy_i[g]) | (run_q[g] & done_i[g]));
     end
   endgenerate
 
@@ -193,6 +200,7 @@ module hexstep_wb #(
     irq_en_d = irq_en_q;  pend_d = pend_q;
     start_cmd_d = {NAXES{1'b0}};
     abort_cmd_d = {NAXES{1'b0}};
+    stop_cmd_d = {NAXES{1'b0}};
     rdata = 32'h0;
     i = 0;
 
@@ -206,11 +214,12 @@ module hexstep_wb #(
         G_GSTATUS:  rdata = {30'd0, es2_q, estop_q};
         G_IRQ_EN:   rdata = irq_en_q;
         G_IRQ_PEND: rdata = pend_q;
-        default:    rdata = 32'h0;            // START, ABORT read 0; the rest is unmapped
+        default:    rdata = 32'h0;            // START, ABORT, STOP read 0; the rest unmapped
       endcase
       if (wr) begin
         if (widx == G_START)    start_cmd_d = wdat[NAXES-1:0];
         if (widx == G_ABORT)    abort_cmd_d = wdat[NAXES-1:0];
+        if (widx == G_STOP)     stop_cmd_d = wdat[NAXES-1:0];
         if (widx == G_IRQ_EN)   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
         if (widx == G_IRQ_PEND) pend_d = pend_q & ~wdat;
       end
@@ -247,10 +256,10 @@ module hexstep_wb #(
         if (wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
       end
 
-      overrun = push & ~abort_w[k] & (cnt == 2'd2) & ~go[k];
-      ok_push = push & ~abort_w[k] & ~overrun;
-      if (abort_w[k]) begin
-        cnt_d[k*2 +: 2] = 2'd0;
+      overrun = push & ~abort_w[k] & ~stop_cmd_q[k] & (cnt == 2'd2) & ~go[k];
+      ok_push = push & ~abort_w[k] & ~stop_cmd_q[k] & ~overrun;
+      if (abort_w[k] | stop_cmd_q[k]) begin
+        cnt_d[k*2 +: 2] = 2'd0;           // flush; a push in this cycle is dropped too
         run_d[k] = 1'b0;
       end else begin
         if (go[k]) run_d[k] = 1'b1;
@@ -289,6 +298,7 @@ module hexstep_wb #(
       ack_q <= 1'b0;  dat_q <= 32'h0;  irq_q <= 1'b0;
       es1_q <= 1'b0;  es2_q <= 1'b0;  estop_q <= 1'b0;
       start_cmd_q <= {NAXES{1'b0}};  abort_cmd_q <= {NAXES{1'b0}};
+      stop_cmd_q <= {NAXES{1'b0}};
       run_q <= {NAXES{1'b0}};  cnt_q <= {NAXES*2{1'b0}};  errf_q <= {NAXES*3{1'b0}};
       poshi_q <= {NAXES*32{1'b0}};  irq_en_q <= 32'h0;  pend_q <= 32'h0;
       stg_q <= {NAXES*MW{1'b0}};  cfg_q <= {NAXES{CFG_RESET}};
@@ -296,6 +306,7 @@ module hexstep_wb #(
       ack_q <= ack_d;  dat_q <= dat_d;  irq_q <= irq_d;
       es1_q <= estop_i;  es2_q <= es1_q;  estop_q <= estop_d;
       start_cmd_q <= start_cmd_d;  abort_cmd_q <= abort_cmd_d;
+      stop_cmd_q <= stop_cmd_d;
       run_q <= run_d;  cnt_q <= cnt_d;  errf_q <= errf_d;
       poshi_q <= poshi_d;  irq_en_q <= irq_en_d;  pend_q <= pend_d;
       stg_q <= stg_d;  cfg_q <= cfg_d;
@@ -309,6 +320,7 @@ module hexstep_wb #(
   assign irq_o    = irq_q;
   assign start_o  = go;
   assign abort_o  = abort_w;
+  assign stop_o   = stop_cmd_q;
 
   // Core move inputs: the queue head, fields at their word positions (64-bit values span two
   // consecutive words, low word first).
@@ -316,6 +328,7 @@ module hexstep_wb #(
     for (g = 0; g < NAXES; g = g + 1) begin : g_ports
       assign steps_o[g*STEP_W +: STEP_W]       = q0_q[g*MW + W_STEPS*32 +: STEP_W];
       assign dir_o[g]                          = q0_q[g*MW + W_DIR*32];
+      assign jog_o[g]                          = q0_q[g*MW + W_DIR*32 + 1];
       assign v_start_o[g*SPEED_W +: SPEED_W]   = q0_q[g*MW + W_V_START*32 +: SPEED_W];
       assign v_max_o[g*SPEED_W +: SPEED_W]     = q0_q[g*MW + W_V_MAX*32 +: SPEED_W];
       assign v_end_o[g*SPEED_W +: SPEED_W]     = q0_q[g*MW + W_V_END*32 +: SPEED_W];

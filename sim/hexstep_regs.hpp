@@ -22,7 +22,7 @@ constexpr unsigned VERSION_MAJOR_SHIFT = 8;
 constexpr uint32_t VERSION_MAJOR_MASK = 0x0000FF00;
 constexpr unsigned VERSION_NAXES_SHIFT = 16;
 constexpr uint32_t VERSION_NAXES_MASK = 0x00FF0000;
-constexpr uint32_t VERSION_RESET = 0x00060001;
+constexpr uint32_t VERSION_RESET = 0x00060002;
 constexpr uint32_t VERSION_RMASK = 0x00FFFFFF;  // readable bits
 constexpr uint32_t VERSION_RWMASK = 0x00000000;  // read-write bits
 constexpr uint32_t VERSION_W1CMASK = 0x00000000;  // write-1-to-clear bits
@@ -77,6 +77,14 @@ constexpr uint32_t IRQ_PENDING_RMASK = 0x003F3F3F;  // readable bits
 constexpr uint32_t IRQ_PENDING_RWMASK = 0x00000000;  // read-write bits
 constexpr uint32_t IRQ_PENDING_W1CMASK = 0x003F3F3F;  // write-1-to-clear bits
 
+constexpr uint32_t STOP = 0x01C;
+constexpr unsigned STOP_MASK_SHIFT = 0;
+constexpr uint32_t STOP_MASK_MASK = 0x0000003F;
+constexpr uint32_t STOP_RESET = 0x00000000;
+constexpr uint32_t STOP_RMASK = 0x00000000;  // readable bits
+constexpr uint32_t STOP_RWMASK = 0x00000000;  // read-write bits
+constexpr uint32_t STOP_W1CMASK = 0x00000000;  // write-1-to-clear bits
+
 constexpr uint32_t AXIS_BASE = 0x100;
 constexpr uint32_t AXIS_STRIDE = 0x080;
 constexpr unsigned AXIS_COUNT = 6;
@@ -92,9 +100,11 @@ constexpr uint32_t STEPS_W1CMASK = 0x00000000;  // write-1-to-clear bits
 constexpr uint32_t DIR = 0x004;
 constexpr unsigned DIR_POSITIVE_SHIFT = 0;
 constexpr uint32_t DIR_POSITIVE_MASK = 0x00000001;
+constexpr unsigned DIR_JOG_SHIFT = 1;
+constexpr uint32_t DIR_JOG_MASK = 0x00000002;
 constexpr uint32_t DIR_RESET = 0x00000000;
-constexpr uint32_t DIR_RMASK = 0x00000001;  // readable bits
-constexpr uint32_t DIR_RWMASK = 0x00000001;  // read-write bits
+constexpr uint32_t DIR_RMASK = 0x00000003;  // readable bits
+constexpr uint32_t DIR_RWMASK = 0x00000003;  // read-write bits
 constexpr uint32_t DIR_W1CMASK = 0x00000000;  // write-1-to-clear bits
 constexpr uint32_t V_START_LO = 0x008;
 constexpr unsigned V_START_LO_VAL_SHIFT = 0;
@@ -286,7 +296,7 @@ constexpr uint32_t POLARITY_W1CMASK = 0x00000000;  // write-1-to-clear bits
 inline constexpr uint32_t kAll[] = {STEPS, DIR, V_START_LO, V_START_HI, V_MAX_LO, V_MAX_HI, V_END_LO, V_END_HI, V_DEC_LO, V_DEC_HI, ACC_LO, ACC_HI, DEC_LO, DEC_HI, ACC_STEPS, DEC_STEP, DEC_FRAC, CMD, STATUS, ERR, POS_LO, POS_HI, STEP_HIGH, STEP_LOW, DIR_SETUP, DIR_HOLD, POLARITY};
 }  // namespace axis
 
-inline constexpr uint32_t kAll[] = {ID, VERSION, START, ABORT, GSTATUS, IRQ_ENABLE, IRQ_PENDING};
+inline constexpr uint32_t kAll[] = {ID, VERSION, START, ABORT, GSTATUS, IRQ_ENABLE, IRQ_PENDING, STOP};
 constexpr uint32_t kSize = 0x400;
 
 }  // namespace regs

@@ -52,7 +52,8 @@ uint64_t get(const T& v, unsigned lsb, unsigned width) {
 bool same_inputs(const AxisMove& a, const AxisMove& b) {
   return a.steps == b.steps && a.dir == b.dir && a.v_start == b.v_start && a.v_max == b.v_max &&
          a.v_end == b.v_end && a.v_dec == b.v_dec && a.acc == b.acc && a.dec == b.dec &&
-         a.acc_steps == b.acc_steps && a.dec_step == b.dec_step && a.dec_frac == b.dec_frac;
+         a.acc_steps == b.acc_steps && a.dec_step == b.dec_step && a.dec_frac == b.dec_frac &&
+         a.jog == b.jog;
 }
 bool same_inputs(const PulseConfig& a, const PulseConfig& b) {
   return a.step_high == b.step_high && a.step_low == b.step_low && a.dir_setup == b.dir_setup &&
@@ -92,6 +93,7 @@ void RtlCore::reset() {
   t.rst_i = 1;
   t.start_i = 0;
   t.abort_i = 0;
+  t.stop_i = 0;
   t.eval();
   for (int i = 0; i < 2; ++i) {
     t.clk_i = 1;
@@ -108,6 +110,7 @@ void RtlCore::tick(const CoreInputs& in) {
   auto& t = *impl_->top;
   t.start_i = static_cast<uint8_t>(in.start_mask);
   t.abort_i = static_cast<uint8_t>(in.abort_mask);
+  t.stop_i = static_cast<uint8_t>(in.stop_mask);
   for (unsigned k = 0; k < kNumAxes; ++k) {
     const AxisMove& m = in.move[k];
     const PulseConfig& p = in.pulse[k];
@@ -116,6 +119,7 @@ void RtlCore::tick(const CoreInputs& in) {
     impl_->pulse[k] = p;
     put(t.steps_i, k * kW.steps, kW.steps, m.steps);
     put(t.dir_i, k, 1, m.dir);
+    put(t.jog_i, k, 1, m.jog);
     put(t.v_start_i, k * kW.speed_frac, kW.speed_frac, m.v_start);
     put(t.v_max_i, k * kW.speed_frac, kW.speed_frac, m.v_max);
     put(t.v_end_i, k * kW.speed_frac, kW.speed_frac, m.v_end);

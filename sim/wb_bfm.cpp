@@ -63,8 +63,22 @@ void WbTop::drive(bool cyc, bool stb, bool we, uint32_t adr, uint32_t dat, unsig
   t.wb_sel_i = sel & 0xFu;
 }
 
+WbPins WbTop::pins() const {
+  const auto& t = *impl_->top;
+  WbPins p;
+  p.cyc = t.wb_cyc_i;
+  p.stb = t.wb_stb_i;
+  p.we = t.wb_we_i;
+  p.adr = t.wb_adr_i;
+  p.dat = t.wb_dat_i;
+  p.sel = t.wb_sel_i;
+  p.estop = t.estop_i;
+  return p;
+}
+
 void WbTop::tick() {
   auto& t = *impl_->top;
+  if (pre_edge) pre_edge(pins());
   t.eval();
   if (impl_->trace) impl_->trace->dump(cycles_ * 10);
   t.clk_i = 1;

@@ -12,6 +12,8 @@
 #include <random>
 #include <string>
 
+#include "hexstep/wb_model.hpp"
+
 namespace hexstep {
 
 class WbTop {
@@ -45,6 +47,10 @@ class WbTop {
 
   // Called after every rising edge (outputs of that edge visible).
   std::function<void()> on_edge;
+  // Called right before every rising edge with the inputs the edge samples (to feed a model).
+  std::function<void(const WbPins&)> pre_edge;
+  // The inputs currently driven.
+  WbPins pins() const;
 
  private:
   struct Impl;

@@ -50,8 +50,15 @@ u128 pos_decel(uint64_t p, uint64_t s, uint64_t d, uint64_t j) {
 
 uint32_t validate_move(const AxisMove& m, const Widths& w) {
   (void)w;
-  if (m.steps == 0) return kErrNone;
   uint32_t e = kErrNone;
+  if (m.jog) {
+    if (m.v_max == 0) e |= kErrVmaxZero;
+    if (m.v_start > m.v_max) e |= kErrStartAboveMax;
+    if (m.v_start == 0 && m.acc == 0) e |= kErrNoStart;
+    if (m.dec == 0) e |= kErrJogNoDec;
+    return e;
+  }
+  if (m.steps == 0) return kErrNone;
   if (m.v_max == 0) e |= kErrVmaxZero;
   if (m.v_start > m.v_max) e |= kErrStartAboveMax;
   if (m.v_end > m.v_max) e |= kErrEndAboveMax;
@@ -71,6 +78,7 @@ void AxisModel::reset() {
   s_q_ = p_q_ = 0;
   cnt_q_ = 0;
   dec_first_q_ = false;
+  stop_q_ = false;
   owed_q_ = 0;
   step_q_ = false;
   dir_q_ = true;
@@ -87,7 +95,8 @@ int64_t AxisModel::position() const {
   return static_cast<int64_t>(v);
 }
 
-void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConfig& pc) {
+void AxisModel::tick(bool start, bool abort, bool stop, const AxisMove& mv,
+                     const PulseConfig& pc) {
   const uint32_t pm = static_cast<uint32_t>(w_.pulse_mask());
   const uint32_t hi_t = std::max<uint32_t>(pc.step_high & pm, 1);
   const uint32_t lo_t = std::max<uint32_t>(pc.step_low & pm, 1);
@@ -107,6 +116,7 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
   uint64_t s_n = s_q_, p_n = p_q_;
   uint32_t cnt_n = cnt_q_;
   bool dec_first_n = dec_first_q_;
+  bool stop_n = stop_q_;
   unsigned carry = 0;
   const bool gen = run_q_ && owed_q_ != w_.owe_max();
   if (gen) {
@@ -124,11 +134,16 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
         break;
       }
       case Phase::Decel: {
-        // The first decelerating tick loads v_dec (the planner's exact mean speed over that
-        // tick); later ticks subtract dec. Neither goes below the floor.
-        bool borrow = !dec_first_q_ && cfg_.dec > s_q_;
-        uint64_t t = dec_first_q_ ? cfg_.v_dec : s_q_ - cfg_.dec;
-        s_n = (borrow || t < floor_) ? floor_ : t;
+        if (stop_q_) {
+          // Controlled stop: subtract dec, no v_dec and no floor (the move ends on borrow).
+          s_n = (s_q_ - cfg_.dec) & w_.speed_mask();
+        } else {
+          // The first decelerating tick loads v_dec (the planner's exact mean speed over that
+          // tick); later ticks subtract dec. Neither goes below the floor.
+          bool borrow = !dec_first_q_ && cfg_.dec > s_q_;
+          uint64_t t = dec_first_q_ ? cfg_.v_dec : s_q_ - cfg_.dec;
+          s_n = (borrow || t < floor_) ? floor_ : t;
+        }
         dec_first_n = false;
         break;
       }
@@ -136,18 +151,27 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
         break;
     }
     const uint64_t hi = p_n >> (w_.speed_frac - w_.dec_frac);
-    const bool dec_trig = phase_q_ != Phase::Decel &&
+    const bool dec_trig = !cfg_.jog && phase_q_ != Phase::Decel &&
                           ((cnt_n == cfg_.dec_step && hi >= cfg_.dec_frac) ||
                            (cnt_q_ == cfg_.dec_step && carry));
-    if (cnt_n == cfg_.steps) {
+    // Stopping: the old speed is below dec (or dec is 0): the motion is at rest.
+    const bool stop_end = stop_q_ && (cfg_.dec > s_q_ || cfg_.dec == 0);
+    const bool cnt_end = !cfg_.jog && cnt_n == cfg_.steps;
+    if (cnt_end || stop_end) {
       run_n = false;
       phase_n = Phase::Idle;
     } else if (dec_trig) {
       phase_n = Phase::Decel;
       dec_first_n = true;
-    } else if (phase_q_ == Phase::Accel && (clamp || cnt_n == cfg_.acc_steps)) {
+    } else if (phase_q_ == Phase::Accel && (clamp || (!cfg_.jog && cnt_n == cfg_.acc_steps))) {
       phase_n = Phase::Cruise;
     }
+  }
+  // STOP: from the next tick on, decelerate by dec from the speed reached.
+  if (stop && run_n && !abort) {
+    stop_n = true;
+    phase_n = Phase::Decel;
+    dec_first_n = false;
   }
   unsigned owed_n = owed_q_ + carry - (rise ? 1u : 0u);
 
@@ -174,7 +198,7 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
       m.dec_step &= static_cast<uint32_t>(w_.steps_mask());
       m.dec_frac &= static_cast<uint32_t>(w_.dec_frac_mask());
       const uint32_t e = validate_move(m, w_);
-      if (m.steps == 0 || e != kErrNone) {
+      if ((m.steps == 0 && !m.jog) || e != kErrNone) {
         done_n = true;
         err_n = e != kErrNone;
       } else {
@@ -185,10 +209,15 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
         cnt_n = 0;
         run_n = true;
         dec_first_n = true;
+        stop_n = false;
         dir_tgt_n = m.dir;
-        phase_n = (m.dec_step == 0 && m.dec_frac == 0) ? Phase::Decel
-                  : (m.acc_steps != 0)                  ? Phase::Accel
-                                                        : Phase::Cruise;
+        if (m.jog) {
+          phase_n = m.acc != 0 ? Phase::Accel : Phase::Cruise;
+        } else {
+          phase_n = (m.dec_step == 0 && m.dec_frac == 0) ? Phase::Decel
+                    : (m.acc_steps != 0)                  ? Phase::Accel
+                                                          : Phase::Cruise;
+        }
       }
     }
   }
@@ -208,6 +237,7 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
   p_q_ = p_n;
   cnt_q_ = cnt_n;
   dec_first_q_ = dec_first_n;
+  stop_q_ = stop_n;
   owed_q_ = owed_n;
   dir_tgt_q_ = dir_tgt_n;
   dir_q_ = dir_n;
@@ -221,7 +251,7 @@ void AxisModel::tick(bool start, bool abort, const AxisMove& mv, const PulseConf
 
 uint64_t AxisModel::gen_quiet_ticks() const {
   const u128 wrap = u128(1) << w_.speed_frac;
-  const uint64_t thr_dec = (phase_q_ != Phase::Decel && cnt_q_ == cfg_.dec_step)
+  const uint64_t thr_dec = (!cfg_.jog && phase_q_ != Phase::Decel && cnt_q_ == cfg_.dec_step)
                                ? (uint64_t(cfg_.dec_frac) << (w_.speed_frac - w_.dec_frac))
                                : kNever;
   uint64_t ev = kNever;  // first tick (>= 1) with an event
@@ -246,7 +276,15 @@ uint64_t AxisModel::gen_quiet_ticks() const {
       break;
     case Phase::Decel: {
       const uint64_t d = cfg_.dec;
-      if (dec_first_q_ || s_q_ < floor_) {
+      if (stop_q_) {
+        if (d == 0 || s_q_ < d) {
+          ev = 1;
+        } else {
+          const uint64_t je = s_q_ / d + 1;  // the tick that ends the stop (old speed < d)
+          ev = std::min(ev, je);
+          consider_pos([&](uint64_t j) { return pos_decel(p_q_, s_q_, d, j); }, je);
+        }
+      } else if (dec_first_q_ || s_q_ < floor_) {
         ev = 1;
       } else if (s_q_ == floor_ || d == 0) {
         consider_pos([&](uint64_t j) { return u128(p_q_) + u128(j) * s_q_; }, kNever - 1);
@@ -284,7 +322,7 @@ void AxisModel::skip(uint64_t k) {
       p_q_ += k * s_q_;
       break;
     case Phase::Decel:
-      if (s_q_ == floor_ || cfg_.dec == 0) {
+      if (!stop_q_ && (s_q_ == floor_ || cfg_.dec == 0)) {
         p_q_ += k * s_q_;
       } else {
         p_q_ = static_cast<uint64_t>(pos_decel(p_q_, s_q_, cfg_.dec, k));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "rtl_core.hpp"
@@ -16,6 +17,11 @@ namespace {
 const char* phase_name(Phase p) {
   static const char* n[] = {"idle", "accel", "cruise", "decel"};
   return n[static_cast<int>(p)];
+}
+// $name if set (the sanitizer build uses smaller counts, mk/abuse.mk), else the default.
+uint64_t env_count(const char* name, uint64_t dflt) {
+  const char* s = std::getenv(name);
+  return s && *s ? std::strtoull(s, nullptr, 0) : dflt;
 }
 std::string show(const AxisOutputs& o) {
   std::ostringstream s;
@@ -69,7 +75,8 @@ TEST(Cosim, DirectedJobs) {
   }
 }
 
-// At least 2,000 planned and raw moves over all six axes, chained through the job runner.
+// At least 2,000 planned and raw moves over all six axes, chained through the job runner
+// ($COSIM_MOVES moves instead if set).
 TEST(Cosim, RandomJobs2000Moves) {
   const uint64_t seed = test_seed();
   std::printf("SEED=%llu (rerun with SEED=%llu)\n", static_cast<unsigned long long>(seed),
@@ -77,7 +84,8 @@ TEST(Cosim, RandomJobs2000Moves) {
   std::mt19937_64 rng(seed);
   unsigned moves = 0;
   uint64_t cycles = 0;
-  for (int j = 0; moves < 2004; ++j) {
+  const uint64_t target = env_count("COSIM_MOVES", 2004);
+  for (int j = 0; moves < target; ++j) {
     NamedJob nj = random_job(rng, 28, true);
     moves += 28 * kNumAxes;
     Lockstep ls("random job " + std::to_string(j) + " seed " + std::to_string(seed));
@@ -89,7 +97,9 @@ TEST(Cosim, RandomJobs2000Moves) {
   std::printf("%u moves, %llu cycles, 0 mismatches\n", moves, static_cast<unsigned long long>(cycles));
 }
 
-// Random strobes, aborts, starts on busy axes, live pulse-timing and polarity changes.
+// Random strobes, aborts, controlled stops, jog moves, starts on busy axes, live pulse-timing
+// and polarity changes
+// (1,500,000 cycles, or $COSIM_CYCLES).
 TEST(Cosim, RandomStimulusWithAbortsAndBusyStarts) {
   const uint64_t seed = test_seed() + 1;
   std::printf("SEED=%llu (this test uses SEED+1)\n", static_cast<unsigned long long>(seed - 1));
@@ -98,26 +108,31 @@ TEST(Cosim, RandomStimulusWithAbortsAndBusyStarts) {
   ls.reset();
   CoreInputs in;
   for (unsigned a = 0; a < kNumAxes; ++a) in.pulse[a] = random_pulse(rng);
-  unsigned starts = 0;
-  for (int cyc = 0; cyc < 1500000; ++cyc) {
+  unsigned starts = 0, stops = 0;
+  const uint64_t cycles = env_count("COSIM_CYCLES", 1500000);
+  for (uint64_t cyc = 0; cyc < cycles; ++cyc) {
     in.start_mask = 0;
     in.abort_mask = 0;
+    in.stop_mask = 0;
     for (unsigned a = 0; a < kNumAxes; ++a) {
       const AxisOutputs o = ls.out(a);
       const unsigned r = static_cast<unsigned>(rng() % 100000);
       if ((!o.busy && r < 1500) || r < 3) {  // mostly when idle, sometimes while busy
         in.start_mask |= 1u << a;
         in.move[a] = (rng() % 4) ? random_raw_move(rng) : encode(random_ramp(rng)).regs;
+        in.move[a].jog = rng() % 6 == 0;  // jog: runs until a stop or an abort
         ++starts;
       }
       if (r >= 99990) in.abort_mask |= 1u << a;
       if (r >= 99980 && r < 99985) in.pulse[a] = random_pulse(rng);
+      if (r >= 99940 && r < 99980) ++stops, in.stop_mask |= 1u << a;
     }
     if (rng() % 1000 == 0) in.start_mask |= (1u << kNumAxes) - 1;  // all axes, one strobe
     ls.tick(in);
     if (ls.mismatches() != 0) break;
   }
   EXPECT_EQ(ls.mismatches(), 0u) << "SEED=" << seed - 1;
-  EXPECT_GT(starts, 2000u);
-  std::printf("%u start strobes over %llu cycles\n", starts, static_cast<unsigned long long>(ls.cycles()));
+  EXPECT_GT(starts, 2000u * cycles / 1500000);
+  std::printf("%u start strobes, %u stop strobes over %llu cycles\n", starts, stops,
+              static_cast<unsigned long long>(ls.cycles()));
 }

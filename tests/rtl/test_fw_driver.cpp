@@ -13,9 +13,11 @@
 
 #include "hexstep/core.hpp"
 #include "hexstep/job.hpp"
+#include "hexstep/wb_model.hpp"
 #include "hexstep_drv.h"
 #include "hexstep_fw_plan.h"  // generated: hexstep plan --format c
 #include "hexstep_regs.hpp"
+#include "vectors.hpp"
 #include "wb_bfm.hpp"
 
 using namespace hexstep;
@@ -117,6 +119,22 @@ PulseConfig to_model(const hexstep_plan_pulse_t& p) {
 int64_t planned_total(unsigned k) {
   const auto& m = hexstep_plan_moves[k];
   return m.dir ? static_cast<int64_t>(m.steps) : -static_cast<int64_t>(m.steps);
+}
+
+hexstep_move_t to_fw(const AxisMove& a) {
+  hexstep_move_t m{};
+  m.steps = a.steps;
+  m.dir = (a.dir ? 1u : 0u) | (a.jog ? HEXSTEP_MOVE_JOG : 0u);
+  m.v_start = a.v_start;
+  m.v_max = a.v_max;
+  m.v_end = a.v_end;
+  m.acc = a.acc;
+  m.dec = a.dec;
+  m.v_dec = a.v_dec;
+  m.acc_steps = a.acc_steps;
+  m.dec_step = a.dec_step;
+  m.dec_frac = a.dec_frac;
+  return m;
 }
 
 // A long constant-speed move (1/16 step per cycle) for the abort and e-stop tests.
@@ -356,5 +374,57 @@ TEST(FwDriver, EstopFlagsAndClear) {
   int64_t pos2 = 0;
   ASSERT_EQ(hexstep_read_position(&b.dev, 0, &pos2), HEXSTEP_OK);
   EXPECT_EQ(pos2, pos + planned_total(0));
+  EXPECT_EQ(b.bus.protocol_errors(), 0u);
+}
+
+// hexstep_stop on a planned move and on a jog move: both come to rest short of / without an
+// end, the queued move behind the first never starts, and every position and STEP edge equals
+// the register-block model (hexstep::WbModel) fed the same bus cycles.
+TEST(FwDriver, StopAndJog) {
+  Board b(3);
+  WbModel model;
+  uint64_t pin_mismatches = 0;
+  b.bus.pre_edge = [&](const WbPins& p) { model.tick(p); };
+  auto record = b.bus.on_edge;
+  b.bus.on_edge = [&] {
+    record();
+    for (unsigned k = 0; k < kNumAxes; ++k)
+      pin_mismatches += b.bus.step(k) != model.step(k) || b.bus.dir(k) != model.dir(k);
+  };
+  ASSERT_EQ(hexstep_reset(&b.dev), HEXSTEP_OK);
+  // Axis 1: a 4,000-step move, 0 -> 1 M steps/s at 1e9 steps/s^2 (500 steps of ramp), plus a
+  // second move queued behind it. Axis 5: a negative jog to 2 M steps/s.
+  hexstep_move_t mv = to_fw(test::encode({4000, true, 0, 1e6, 0, 1e9, 1e9}).regs);
+  ASSERT_EQ(hexstep_queue_move(&b.dev, 1, &mv), HEXSTEP_OK);
+  ASSERT_EQ(hexstep_queue_move(&b.dev, 1, &mv), HEXSTEP_OK);
+  hexstep_move_t jog{};
+  const real clk = real(kDefaultClockHz);
+  ASSERT_TRUE(speed_to_reg(2e6, clk, jog.v_max));
+  ASSERT_TRUE(accel_to_reg(2e9, clk, jog.acc));
+  ASSERT_TRUE(accel_to_reg(4e9, clk, jog.dec));
+  jog.dir = HEXSTEP_MOVE_JOG;  // negative, jog
+  ASSERT_EQ(hexstep_queue_move(&b.dev, 5, &jog), HEXSTEP_OK);
+  ASSERT_EQ(hexstep_start(&b.dev, 0x22u), HEXSTEP_OK);
+  b.ticks(150000);  // 1.5 ms: axis 1 cruising at step ~1,000; the jog at full speed
+  ASSERT_EQ(hexstep_stop(&b.dev, 0x22u), HEXSTEP_OK);
+  ASSERT_EQ(hexstep_wait(&b.dev, 0x22u, 1000000u), HEXSTEP_OK);
+  int64_t p1 = 0, p5 = 0;
+  ASSERT_EQ(hexstep_read_position(&b.dev, 1, &p1), HEXSTEP_OK);
+  ASSERT_EQ(hexstep_read_position(&b.dev, 5, &p5), HEXSTEP_OK);
+  EXPECT_EQ(p1, model.core().axis(1).position());
+  EXPECT_EQ(p5, model.core().axis(5).position());
+  // Kinematics: axis 1 stops from 1 M steps/s at 1e9 steps/s^2 (+500 steps) after ~1,000
+  // steps; the jog reached 2 M steps/s after 1 ms (1,000 steps), ran 0.5 ms (1,000 steps) and
+  // stops at 4e9 steps/s^2 (+500 steps).
+  EXPECT_NEAR(double(p1), 1000.0 + 500.0, 20.0);
+  EXPECT_LT(p1, 4000) << "the second queued move never started";
+  EXPECT_NEAR(double(p5), -2500.0, 20.0);
+  EXPECT_EQ(static_cast<int64_t>(b.rises[1].size()), p1);
+  EXPECT_EQ(static_cast<int64_t>(b.rises[5].size()), -p5);
+  unsigned n = 0;
+  ASSERT_EQ(hexstep_queue_free(&b.dev, 1, &n), HEXSTEP_OK);
+  EXPECT_EQ(n, 2u) << "STOP flushes the queue";
+  EXPECT_EQ(pin_mismatches, 0u);
+  EXPECT_EQ(hexstep_stop(&b.dev, 0x40u), HEXSTEP_ERR_ARG);
   EXPECT_EQ(b.bus.protocol_errors(), 0u);
 }

@@ -21,6 +21,7 @@ struct AxisMove {
   uint32_t acc_steps = 0;   // acceleration ends when this many steps are done (or at v_max)
   uint32_t dec_step = 0;    // deceleration starts at position dec_step + dec_frac / 2^DFRAC_W
   uint32_t dec_frac = 0;
+  bool jog = false;         // continuous move: ignores steps/acc_steps/dec_*, ends by STOP
 };
 
 // Output timing of STEP/DIR, in clock cycles. Static configuration, sampled every cycle.
@@ -45,6 +46,7 @@ enum MoveError : uint32_t {
   kErrNoFloor = 1u << 4,        // v_end == 0 and dec == 0: deceleration could stall
   kErrNoStart = 1u << 5,        // v_start == 0 and nothing accelerates it: would stall
   kErrDecAboveMax = 1u << 6,    // v_dec > v_max
+  kErrJogNoDec = 1u << 7,       // jog move with dec == 0: STOP could never bring it to rest
 };
 
 // Checks a move the way the core's start logic does. Returns a MoveError bit set.
@@ -56,7 +58,11 @@ class AxisModel {
 
   void reset();
   // One rising clock edge. start: this axis is selected by the start strobe. abort: stop now.
-  void tick(bool start, bool abort, const AxisMove& move, const PulseConfig& pc);
+  // stop: controlled stop strobe (decelerate by dec to rest; docs/ARCHITECTURE.md).
+  void tick(bool start, bool abort, bool stop, const AxisMove& move, const PulseConfig& pc);
+  void tick(bool start, bool abort, const AxisMove& move, const PulseConfig& pc) {
+    tick(start, abort, false, move, pc);
+  }
 
   // Registered outputs after the last edge.
   bool step_pin(const PulseConfig& pc) const { return step_q_ != pc.step_invert; }
@@ -67,6 +73,7 @@ class AxisModel {
   bool done() const { return done_q_; }
   bool err() const { return err_q_; }
   Phase phase() const { return phase_q_; }
+  bool stopping() const { return run_q_ && stop_q_; }
   int64_t position() const;  // signed, POS_W bits, wraps
   uint32_t steps_done() const { return cnt_q_; }
   uint64_t speed() const { return s_q_; }
@@ -93,6 +100,7 @@ class AxisModel {
   uint64_t p_q_ = 0;   // position fraction
   uint32_t cnt_q_ = 0; // steps generated in this move
   bool dec_first_q_ = false;  // the next decelerating tick loads v_dec
+  bool stop_q_ = false;       // controlled stop in progress
   unsigned owed_q_ = 0;
   // Pulse stage.
   bool step_q_ = false;

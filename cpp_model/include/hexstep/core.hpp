@@ -14,6 +14,7 @@ namespace hexstep {
 struct CoreInputs {
   uint32_t start_mask = 0;  // start strobe, one bit per axis
   uint32_t abort_mask = 0;
+  uint32_t stop_mask = 0;   // controlled stop strobe
   std::array<AxisMove, kNumAxes> move{};
   std::array<PulseConfig, kNumAxes> pulse{};
 };
@@ -40,7 +41,8 @@ class CoreSim {
   // One rising clock edge with these inputs applied before it.
   virtual void tick(const CoreInputs& in) = 0;
   virtual AxisOutputs out(unsigned axis) const = 0;
-  // Event mode: ticks that may be skipped with these (start/abort-free) inputs; 0 if unsupported.
+  // Event mode: ticks that may be skipped with these (start/abort/stop-free) inputs; 0 if
+  // unsupported.
   virtual uint64_t quiet_ticks(const CoreInputs&) const { return 0; }
   virtual void skip(uint64_t) {}
 };
@@ -55,7 +57,8 @@ class CoreModel : public CoreSim {
   }
   void tick(const CoreInputs& in) override {
     for (unsigned i = 0; i < kNumAxes; ++i)
-      ax_[i].tick((in.start_mask >> i) & 1u, (in.abort_mask >> i) & 1u, in.move[i], in.pulse[i]);
+      ax_[i].tick((in.start_mask >> i) & 1u, (in.abort_mask >> i) & 1u, (in.stop_mask >> i) & 1u,
+                  in.move[i], in.pulse[i]);
     pulse_ = in.pulse;
   }
   AxisOutputs out(unsigned i) const override {
@@ -64,7 +67,7 @@ class CoreModel : public CoreSim {
                        a.phase(),             a.position()};
   }
   uint64_t quiet_ticks(const CoreInputs& in) const override {
-    if (in.start_mask != 0 || in.abort_mask != 0) return 0;
+    if (in.start_mask != 0 || in.abort_mask != 0 || in.stop_mask != 0) return 0;
     uint64_t k = ~0ull;
     for (unsigned i = 0; i < kNumAxes; ++i) {
       uint64_t q = ax_[i].quiet_ticks(in.pulse[i]);
