@@ -170,11 +170,14 @@ module hexstep_axis #(
     accept = 1'b0;
 
     // ---- validation of the move at the inputs ----
+    dec_in_x = {SPEED_W{1'b0}};
+    dec_in_x[ACC_W-1:0] = dec_i;
     steps_nz = (steps_i != {STEP_W{1'b0}});
     decel_now = (dec_step_i == {STEP_W{1'b0}}) && (dec_frac_i == {DFRAC_W{1'b0}});
     bad = (v_max_i == {SPEED_W{1'b0}}) ||
           (v_start_i > v_max_i) ||
           (v_end_i > v_max_i) ||
+          ((v_end_i == {SPEED_W{1'b0}}) && (dec_in_x > v_max_i)) ||   // floor dec above v_max
           (v_dec_i > v_max_i) ||
           (acc_steps_i > steps_i) || (dec_step_i > steps_i) ||
           ((v_end_i == {SPEED_W{1'b0}}) && (dec_i == {ACC_W{1'b0}})) ||
@@ -195,8 +198,6 @@ module hexstep_axis #(
     acc_x[ACC_W-1:0] = acc_q;
     dec_x = {SPEED_W{1'b0}};
     dec_x[ACC_W-1:0] = dec_q;
-    dec_in_x = {SPEED_W{1'b0}};
-    dec_in_x[ACC_W-1:0] = dec_i;
     s_up = {1'b0, s_q} + {1'b0, acc_x};
     s_dn = {1'b0, s_q} - {1'b0, dec_x};
     clamp = (phase_q == PH_ACCEL) && (s_up >= {1'b0, v_max_q});

@@ -61,7 +61,8 @@ uint32_t validate_move(const AxisMove& m, const Widths& w) {
   if (m.steps == 0) return kErrNone;
   if (m.v_max == 0) e |= kErrVmaxZero;
   if (m.v_start > m.v_max) e |= kErrStartAboveMax;
-  if (m.v_end > m.v_max) e |= kErrEndAboveMax;
+  // The deceleration floor (v_end, or dec when v_end is 0) must not exceed v_max.
+  if (m.v_end > m.v_max || (m.v_end == 0 && m.dec > m.v_max)) e |= kErrEndAboveMax;
   if (m.v_dec > m.v_max) e |= kErrDecAboveMax;
   if (m.acc_steps > m.steps || m.dec_step > m.steps) e |= kErrCountPastN;
   if (m.v_end == 0 && m.dec == 0) e |= kErrNoFloor;

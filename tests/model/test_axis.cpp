@@ -139,6 +139,9 @@ TEST(Axis, InvalidMovesAreRefusedWithoutMotion) {
   { AxisMove m = ok; m.dec_step = 11; cases.push_back({"decel count past N", m, kErrCountPastN}); }
   { AxisMove m = ok; m.acc_steps = 11; cases.push_back({"accel count past N", m, kErrCountPastN}); }
   { AxisMove m = ok; m.v_end = 0; m.dec = 0; cases.push_back({"no floor", m, kErrNoFloor}); }
+  // Floor dec above v_max (the formal speed-bound proof's counterexample, formal/, scaled up).
+  { AxisMove m = ok; m.v_end = 0; m.dec = (1ull << 40) + 1; m.v_max = m.v_start = 1ull << 40;
+    cases.push_back({"floor dec above max", m, kErrEndAboveMax}); }
   { AxisMove m = ok; m.v_start = 0; m.acc = 0; m.acc_steps = 3; cases.push_back({"zero speed, zero accel", m, kErrNoStart}); }
   for (const Case& c : cases) {
     EXPECT_NE(validate_move(c.m) & c.bit, 0u) << c.what;

@@ -143,8 +143,8 @@ AxisMove trapezoid(uint32_t steps, bool dir = true) {
   m.dir = dir;
   m.v_start = 1ull << 58;
   m.v_max = 1ull << 61;
-  m.acc = 1ull << 55;
-  m.dec = 1ull << 55;
+  m.acc = 1ull << 43;  // the largest power of two in the 44-bit ACC/DEC registers
+  m.dec = 1ull << 43;
   m.v_end = 1ull << 58;
   m.v_dec = (1ull << 61) - (1ull << 54);
   m.acc_steps = steps / 4;
@@ -164,6 +164,10 @@ AxisMove cruise(uint32_t steps, uint64_t speed, bool dir = true) {
 TEST(Wb, MovesUsedHereAreValid) {
   EXPECT_EQ(validate_move(trapezoid(40)), 0u);
   EXPECT_EQ(validate_move(cruise(10, 1ull << 62)), 0u);
+  // Every value fits its register (the bus keeps only ACC_W bits of ACC/DEC).
+  const Widths w;
+  EXPECT_EQ(trapezoid(40).acc & ~w.acc_mask(), 0u);
+  EXPECT_EQ(trapezoid(40).dec & ~w.acc_mask(), 0u);
 }
 
 TEST(Wb, ResetValuesOfEveryRegister) {

@@ -41,7 +41,7 @@ enum MoveError : uint32_t {
   kErrNone = 0,
   kErrVmaxZero = 1u << 0,       // v_max == 0
   kErrStartAboveMax = 1u << 1,  // v_start > v_max
-  kErrEndAboveMax = 1u << 2,    // v_end > v_max
+  kErrEndAboveMax = 1u << 2,    // floor above v_max: v_end > v_max, or v_end == 0 && dec > v_max
   kErrCountPastN = 1u << 3,     // acc_steps > steps or dec_step > steps
   kErrNoFloor = 1u << 4,        // v_end == 0 and dec == 0: deceleration could stall
   kErrNoStart = 1u << 5,        // v_start == 0 and nothing accelerates it: would stall
