@@ -1,0 +1,26 @@
+# SPDX-License-Identifier: Apache-2.0
+# Synthesis (synth/, docs/SYNTH.md): Yosys + nextpnr + packers from the project's .venv.
+#   make synth                  every target of synth/targets.json (out-of-context rows and board
+#                               bitstreams), then the table: synth/results/summary.md (printed)
+#                               and docs/SYNTH.md; one JSON per target in synth/results/
+#   make synth-<target>         one target (e.g. make synth-ulx3s), results as above
+# Builds go to $(BUILD)/synth-out/<target>/ (bitstreams: <target>.bin / .bit there). An
+# out-of-context row that does not fit is reported as such; a board that does not fit or misses
+# its core clock, or any Yosys warning not in synth/yosys_waivers.txt on a board, fails the job
+# after the remaining targets have run. `make test` runs the bounded slice: ctest label `tool`
+# (synth/CMakeLists.txt).
+SYNTH_FLOW    := $(VENV)/bin/python3 synth/flow.py
+SYNTH_TARGETS := ooc_hx8k ooc_up5k ooc_ecp5_25f ooc_ecp5_85f icebreaker ulx3s colorlight_i5
+SYNTH_OUT     := $(BUILD)/synth-out
+
+.PHONY: synth $(addprefix synth-,$(SYNTH_TARGETS))
+
+synth: deps
+	@r=0; for t in $(SYNTH_TARGETS); do \
+	  $(SYNTH_FLOW) build $$t --out $(SYNTH_OUT) || r=1; \
+	done; \
+	$(SYNTH_FLOW) summary --doc docs/SYNTH.md || r=1; \
+	exit $$r
+
+$(addprefix synth-,$(SYNTH_TARGETS)): synth-%: deps
+	$(SYNTH_FLOW) build $* --out $(SYNTH_OUT)

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: Apache-2.0
+// hexstep: ULX3S (ECP5 LFE5U-85F) board top: EHXPLLL from the 25 MHz oscillator, the SPI slave and six
+// STEP/DIR/EN outputs on connector pins (pinout: constraints/ulx3s.lpf, docs/SYNTH.md).
+`default_nettype none
+
+module hexstep_ulx3s #(
+  parameter integer NAXES   = 6,
+  parameter integer SPEED_W = 64,
+  parameter integer ACC_W   = 44,
+  parameter integer STEP_W  = 32,
+  parameter integer DFRAC_W = 32,
+  parameter integer PULSE_W = 12,
+  parameter integer POS_W   = 32,
+  parameter integer OWE_W   = 2,
+  // PLL (see hexstep_ecp5_pll), set by synth/flow.py from synth/targets.json; the defaults
+  // (ecppll -i 25 -o 40) give 40 MHz.
+  parameter integer PLL_CLKI_DIV     = 5,
+  parameter integer PLL_CLKFB_DIV    = 8,
+  parameter integer PLL_CLKOP_DIV    = 15,
+  parameter integer PLL_CLKOP_CPHASE = 7
+) (
+  input  wire             CLK25,      // 25 MHz oscillator
+  input  wire             BTN_FIRE1,  // FIRE1 button (active high): reset while pressed
+  output wire [1:0]       LED,        // LED[0]: E-STOP pin active, LED[1]: interrupt pending
+  input  wire             SPI_SCK,
+  input  wire             SPI_CS_N,
+  input  wire             SPI_MOSI,
+  output wire             SPI_MISO,
+  input  wire             ESTOP,      // active high
+  output wire [5:0]       STEP,       // six pin triples; axes >= NAXES stay idle and disabled
+  output wire [5:0]       DIR,
+  output wire [5:0]       EN_N
+);
+
+  wire clk, locked;
+  hexstep_ecp5_pll #(
+    .CLKI_DIV (PLL_CLKI_DIV), .CLKFB_DIV (PLL_CLKFB_DIV), .CLKOP_DIV (PLL_CLKOP_DIV),
+    .CLKOP_CPHASE (PLL_CLKOP_CPHASE)
+  ) u_pll (.clk_i (CLK25), .clk_o (clk), .locked_o (locked));
+
+  wire miso, miso_oe, irq, estop;
+  hexstep_board #(
+    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .PINS (6)
+  ) u_board (
+    .clk_i (clk), .rst_i (~locked | BTN_FIRE1),
+    .spi_sck_i (SPI_SCK), .spi_cs_n_i (SPI_CS_N), .spi_mosi_i (SPI_MOSI),
+    .spi_miso_o (miso), .spi_miso_oe_o (miso_oe),
+    .estop_i (ESTOP), .step_o (STEP), .dir_o (DIR), .en_n_o (EN_N), .irq_o (irq),
+    .estop_o (estop)
+  );
+
+  assign SPI_MISO = miso_oe ? miso : 1'bz;   // released while CS_N is high (shared MISO)
+  assign LED = {irq, estop};
+
+endmodule
+
+`default_nettype wire
