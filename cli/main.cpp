@@ -1,53 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: command-line entry point. Each subcommand lives in its own file (simulate.cpp,
-// plan.cpp; send is to come) and registers itself on the CLI11 app here.
-#include <exception>
-#include <iostream>
+// hexstep: command-line entry point; the command line itself is run_cli() in app.cpp.
+#include "app.hpp"
 
-#include <CLI/CLI.hpp>
-
-#include "common.hpp"
-#include "plan.hpp"
-#include "simulate.hpp"
-
-int main(int argc, char** argv) {
-  using namespace hexstep::cli;
-  CLI::App app{
-      "hexstep: tools for the hexstep FPGA six-axis stepper STEP/DIR generator.\n"
-      "Jobs are JSON files of per-axis register-level moves (docs/FORMATS.md).",
-      "hexstep"};
-  app.require_subcommand(1);
-  app.footer(
-      "Run 'hexstep SUBCOMMAND --help' for the options of a subcommand.\n"
-      "Exit status: 0 success; 1 internal error; 2 bad command line, unreadable or invalid job\n"
-      "or request file, engine not built, or a move the planner, the registers or the pulse\n"
-      "timing cannot do; 3 (plan) the --time budget is shorter than the fastest possible move;\n"
-      "4 (simulate) the run did not finish within --max-cycles; 5 (simulate) the core refused a\n"
-      "move the job reader accepted.");
-
-  SimulateOptions sim_opt;
-  CLI::App* sim = add_simulate(app, sim_opt);
-  PlanOptions plan_opt;
-  CLI::App* plan = add_plan(app, plan_opt);
-  // Later: add_send(app, ...).
-
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    std::cerr << "hexstep: error: " << e.what() << " (see hexstep --help)\n";
-    return kExitUsage;
-  }
-  try {
-    if (sim->parsed()) return run_simulate(sim_opt);
-    if (plan->parsed()) return run_plan(plan_opt);
-    std::cerr << "hexstep: error: no subcommand (see hexstep --help)\n";
-    return kExitUsage;
-  } catch (const CliError& e) {
-    std::cerr << "hexstep: error: " << e.what() << "\n";
-    return e.code();
-  } catch (const std::exception& e) {
-    std::cerr << "hexstep: error: internal: " << e.what() << "\n";
-    return kExitInternal;
-  }
-}
+int main(int argc, char** argv) { return hexstep::cli::run_cli(argc, argv); }

@@ -44,3 +44,19 @@ else
   echo "MISMATCH between RTL and model on the planned move" >&2
   exit 1
 fi
+
+SOCSIM=$(dirname "$HEXSTEP")/../soc/hexstep-soc-sim
+if [ -x "$SOCSIM" ]; then
+  echo
+  echo "== The whole chain on the simulated SoC (soc/, firmware/soc_main.c, docs/PROTOCOL.md) =="
+  echo "hexstep plan -> hexstep send --port <pseudo-terminal> -> UART -> PicoRV32 firmware -> Wishbone -> core"
+  "$HEXSTEP" plan --job tests/soc/six_axis_request.json --format job --out "$out/soc_job.json"
+  "$SOCSIM" --job "$out/soc_job.json" --csv "$out/soc.csv" -- "$HEXSTEP" send "$out/soc_job.json" --port '{port}'
+  "$HEXSTEP" simulate "$out/soc_job.json" --engine model > "$out/soc_model.csv"
+  if cmp -s "$out/soc_model.csv" "$out/soc.csv"; then
+    echo "SoC == model: all $(($(wc -l < "$out/soc.csv") - 1)) STEP edges sent through the firmware at identical cycles."
+  else
+    echo "MISMATCH between the SoC run and the model" >&2
+    exit 1
+  fi
+fi

@@ -1,0 +1,18 @@
+/* SPDX-License-Identifier: Apache-2.0
+ * hexstep SoC firmware: reset entry. The image runs where it is loaded (on-chip RAM from 0),
+ * so only the stack and .bss need setting up. */
+  .section .text.start
+  .globl _start
+_start:
+  la sp, _stack_top
+  la t0, _bss_start
+  la t1, _bss_end
+1:
+  bgeu t0, t1, 2f
+  sw zero, 0(t0)
+  addi t0, t0, 4
+  j 1b
+2:
+  call main
+3:
+  j 3b

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: Apache-2.0
+// hexstep SoC: PicoRV32 (Wishbone) + RAM + UART + hexstep_top, the soft MCU that runs the firmware.
+`default_nettype none
+
+// Memory map (byte addresses, decoded on address bits [31:28]; docs/PROTOCOL.md):
+//   0x0000_0000  RAM, RAM_WORDS * 4 bytes: firmware image (INIT_FILE), data, stack at the top
+//   0x1000_0000  UART (hexstep_soc_uart: DATA, STATUS, DIV)
+//   0x2000_0000  hexstep_top registers (rdl/hexstep.rdl, 0x400 bytes in a 4 KiB window)
+//   0x3000_0000  SYS: [0] hexstep irq_o level, [1] e-stop pin (after a two-flop synchroniser)
+//   elsewhere    reads 0, writes ignored, acked (a wild pointer never hangs the bus)
+// One master (the CPU), so the interconnect is a decoder and a read multiplexer; every slave
+// acks one or more cycles after the request and only while it is held.
+// CPU: picorv32_wb from the PyPI package pythondata-cpu-picorv32 (not in this repository),
+// RV32I without compressed instructions, multiplier or interrupts: the firmware polls the IRQ
+// level in SYS (PicoRV32 interrupts need its own non-standard instructions).
+module hexstep_soc #(
+  parameter integer RAM_WORDS = 4096,  // 16 KiB: firmware (< 8 KiB), move FIFOs, stack
+  parameter         INIT_FILE = "",    // firmware image for $readmemh (built by soc/CMakeLists.txt)
+  parameter integer UART_DIV  = 868    // UART cycles per bit at reset (100 MHz / 115200)
+) (
+  input  wire       clk_i,
+  input  wire       rst_i,     // synchronous, active high
+  input  wire       uart_rx_i,
+  output wire       uart_tx_o,
+  input  wire       estop_i,   // asynchronous, active high (hexstep_top synchronises it)
+  output wire       irq_o,     // hexstep_top's interrupt line, also readable by the firmware
+  output wire [5:0] step_o,
+  output wire [5:0] dir_o,
+  output wire       trap_o     // CPU trapped (illegal instruction, misaligned access)
+);
+  wire [31:0] adr, dat_w;
+  wire [3:0]  sel;
+  wire        cyc, stb, we;
+  reg  [31:0] dat_r;
+  reg         ack;
+
+  picorv32_wb #(
+    .ENABLE_COUNTERS (1), .ENABLE_COUNTERS64 (0), .COMPRESSED_ISA (0), .ENABLE_MUL (0),
+    .ENABLE_DIV (0), .ENABLE_IRQ (0), .BARREL_SHIFTER (1), .CATCH_MISALIGN (1),
+    .CATCH_ILLINSN (1), .PROGADDR_RESET (32'h0), .STACKADDR (RAM_WORDS * 4)
+  ) u_cpu (
+    .trap (trap_o), .wb_rst_i (rst_i), .wb_clk_i (clk_i),
+    .wbm_adr_o (adr), .wbm_dat_o (dat_w), .wbm_dat_i (dat_r), .wbm_we_o (we),
+    .wbm_sel_o (sel), .wbm_stb_o (stb), .wbm_ack_i (ack), .wbm_cyc_o (cyc),
+    .pcpi_valid (), .pcpi_insn (), .pcpi_rs1 (), .pcpi_rs2 (), .pcpi_wr (1'b0),
+    .pcpi_rd (32'd0), .pcpi_wait (1'b0), .pcpi_ready (1'b0),
+    .irq (32'd0), .eoi (), .trace_valid (), .trace_data (), .mem_instr ()
+  );
+
+  // ---- decoder ----
+  wire s_ram = (adr[31:28] == 4'h0);
+  wire s_uart = (adr[31:28] == 4'h1);
+  wire s_hs = (adr[31:28] == 4'h2);
+  wire s_sys = (adr[31:28] == 4'h3);
+  wire s_none = ~(s_ram | s_uart | s_hs | s_sys);
+
+  wire [31:0] ram_dat, uart_dat, hs_dat;
+  wire        ram_ack, uart_ack, hs_ack;
+  reg  [31:0] sys_dat_q;
+  reg         sys_ack_q;
+
+  hexstep_soc_ram #(.WORDS (RAM_WORDS), .INIT_FILE (INIT_FILE)) u_ram (
+    .clk_i (clk_i), .rst_i (rst_i), .wb_cyc_i (cyc), .wb_stb_i (stb & s_ram), .wb_we_i (we),
+    .wb_adr_i (adr), .wb_dat_i (dat_w), .wb_sel_i (sel), .wb_dat_o (ram_dat), .wb_ack_o (ram_ack)
+  );
+
+  hexstep_soc_uart #(.DIV_RESET (UART_DIV)) u_uart (
+    .clk_i (clk_i), .rst_i (rst_i), .wb_cyc_i (cyc), .wb_stb_i (stb & s_uart), .wb_we_i (we),
+    .wb_adr_i (adr[3:2]), .wb_dat_i (dat_w), .wb_dat_o (uart_dat), .wb_ack_o (uart_ack),
+    .rx_i (uart_rx_i), .tx_o (uart_tx_o)
+  );
+
+  hexstep_top u_hexstep (
+    .clk_i (clk_i), .rst_i (rst_i), .wb_cyc_i (cyc), .wb_stb_i (stb & s_hs), .wb_we_i (we),
+    .wb_adr_i (adr[11:0]), .wb_dat_i (dat_w), .wb_sel_i (sel), .wb_dat_o (hs_dat),
+    .wb_ack_o (hs_ack), .estop_i (estop_i), .irq_o (irq_o), .step_o (step_o), .dir_o (dir_o)
+  );
+
+  // ---- SYS register and the default slave ----
+  reg [1:0] estop_sync_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      estop_sync_q <= 2'b00;
+      sys_ack_q    <= 1'b0;
+      sys_dat_q    <= 32'd0;
+    end else begin
+      estop_sync_q <= {estop_sync_q[0], estop_i};
+      sys_ack_q    <= cyc & stb & (s_sys | s_none) & ~sys_ack_q;
+      sys_dat_q    <= s_sys ? {30'd0, estop_sync_q[1], irq_o} : 32'd0;
+    end
+  end
+
+  always @* begin
+    dat_r = sys_dat_q;
+    ack   = sys_ack_q;
+    if (s_ram)  begin dat_r = ram_dat;  ack = ram_ack;  end
+    if (s_uart) begin dat_r = uart_dat; ack = uart_ack; end
+    if (s_hs)   begin dat_r = hs_dat;   ack = hs_ack;   end
+  end
+
+endmodule
+
+`default_nettype wire
