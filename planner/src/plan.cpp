@@ -76,6 +76,8 @@ void fill_counts(PhasePlan& p) {
 
 namespace {
 
+constexpr real kMaxRampRatio = 1e12L;
+
 void validate(const RampLimits& L) {
   detail::require_positive("--max-speed", L.v_max, "steps/s");
   detail::require_positive("--accel", L.accel, "steps/s^2");
@@ -86,6 +88,13 @@ void validate(const RampLimits& L) {
     fail("--start-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_start) + ")");
   if (L.v_end > L.v_max)
     fail("--end-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_end) + ")");
+  // Ramp rates more than 1e12 apart leave the smaller one below the rounding of the larger in
+  // the triangle's peak (a + d), and the plan would degenerate (found by fuzz_planner).
+  if (L.decel > L.accel * kMaxRampRatio || L.accel > L.decel * kMaxRampRatio)
+    fail("--decel", "must be within a factor " + num(kMaxRampRatio) + " of --accel = " + num(L.accel) +
+                        " steps/s^2, i.e. in [" + num(L.accel / kMaxRampRatio) + ", " +
+                        num(L.accel * kMaxRampRatio) + "] (got " + num(L.decel) +
+                        "; with --ratio: in [1e-12, 1e12])");
 }
 
 void make_constant(PhasePlan& p, real v) {

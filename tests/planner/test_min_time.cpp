@@ -388,3 +388,19 @@ TEST(MinTime, RandomPlansAreValidAndMinimal) {
               seen[3], seen[4], seen[5]);
   for (int k = 1; k < 6; ++k) EXPECT_GT(seen[k], 0) << profile_name(static_cast<Profile>(k));
 }
+
+// Ramp rates 1e40 apart used to give a degenerate plan (a = d = 0, duration 0; found by
+// fuzz/fuzz_planner.cpp); they are refused, naming --decel with the accepted range.
+TEST(MinTime, RampRatesTooFarApartAreRefused) {
+  Limits l;
+  l.max_speed = 5e6;
+  l.accel = 1e9;
+  l.start_speed = 1;
+  l.ratio = 1e40;
+  expect_error([&] { plan_min_time(300, l); }, "--decel", "[1e-12, 1e12]");
+  l.ratio.reset();
+  l.decel = 1e-31;
+  expect_error([&] { plan_min_time(300, l); }, "--decel", "must be within a factor");
+  l.decel = 1e9 * 1e12;  // the limit itself is accepted
+  EXPECT_EQ(plan_min_time(300, l).steps, 300u);
+}
