@@ -143,6 +143,7 @@ class CoreBench {
     in.start_mask |= 1u << a;
   }
   void abort(unsigned a) { in.abort_mask |= 1u << a; }
+  void stop(unsigned a) { in.stop_mask |= 1u << a; }
   // Background moves on every other axis from now on (each expected to finish exactly).
   void background(bool on) { bg_ = on; }
 
@@ -159,6 +160,7 @@ class CoreBench {
     ls.tick(in);
     in.start_mask = 0;
     in.abort_mask = 0;
+    in.stop_mask = 0;
     for (unsigned a = 0; a < kNumAxes; ++a) mon_[a].sample(cycle(), ls.out(a), in.pulse[a]);
   }
   // Resets RTL and model together: all axes idle at position 0; the monitors start again.
@@ -325,13 +327,80 @@ TEST(Faults, AbortInEveryPhaseThenNewMove) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// STOP (controlled deceleration) is being added to the core (CoreInputs::stop_mask). Room for
-// its fault cases, to be written with it:
-//   - STOP in every phase (kEveryPhase), then a new move: decelerates by `dec` to rest, every
-//     pulse whole, the position equals the model's, other axes undisturbed;
-//   - STOP then ABORT, ABORT then STOP, STOP on an idle axis, STOP on the start edge;
-//   - STOP during a chained sequence through the Wishbone top (queue flushed as documented).
-// TEST(Faults, StopInEveryPhaseThenNewMove) { ... }
+// STOP (controlled deceleration) in every phase, then a new move: the axis comes to rest with
+// every pulse whole (pin monitor), never beyond the move's N, its speed never rising while it
+// stops, RTL == model every cycle, other axes undisturbed. Also STOP then ABORT in the same
+// stop, ABORT and STOP on the same edge, and STOP on an idle axis. (STOP through the bus with
+// the queue flush: tests/rtl/test_wb_model.cpp.)
+TEST(Faults, StopInEveryPhaseThenNewMove) {
+  for (When w : kEveryPhase)
+    for (unsigned extra : {0u, 2u}) {
+      const unsigned k = (static_cast<unsigned>(w) + 2 * extra) % kNumAxes;
+      const std::string name = std::string("stop at ") + when_name(w) + " +" + std::to_string(extra);
+      CoreBench b(name, k, 300 + static_cast<unsigned>(w) * 5 + extra);
+      use_slow_pulse(b);
+      b.background(true);
+      for (int i = 0; i < 20; ++i) b.tick();
+      run_to(b, w, extra);
+      const int64_t p0 = b.out(k).pos;
+      // On the start edge itself the axis is still idle: the STOP does nothing and the new move
+      // runs all its 120 steps (docs/ARCHITECTURE.md: a STOP while not running does nothing).
+      const bool at_start = w == When::StartCycle;
+      b.stop(k);
+      b.tick();
+      uint64_t prev = b.model(k).speed();
+      bool rising = false;
+      const bool ended = b.run_until([&] {
+        if (b.model(k).stopping()) {
+          rising |= b.model(k).speed() > prev;
+          prev = b.model(k).speed();
+        }
+        return !b.out(k).busy;
+      }, 100000);
+      EXPECT_TRUE(ended) << name << ": the stop never came to rest";
+      EXPECT_FALSE(rising) << name << ": speed rose while stopping";
+      if (at_start)
+        EXPECT_EQ(std::llabs(b.out(k).pos - p0), 120) << name;
+      else
+        EXPECT_LT(std::llabs(b.out(k).pos - p0), 120) << name << ": a stop ends before N";
+      new_move_runs(b, name);
+      b.finish();
+    }
+}
+
+TEST(Faults, StopCombinedWithAbortAndOnIdleAxis) {
+  CoreBench b("stop/abort", 2, 77);
+  use_slow_pulse(b);
+  b.background(true);
+  for (int i = 0; i < 20; ++i) b.tick();
+  // STOP, then ABORT while stopping: the abort wins at once.
+  run_to(b, When::Cruise, 3);
+  b.stop(2);
+  b.tick();
+  ASSERT_TRUE(b.model(2).stopping());
+  for (int i = 0; i < 40; ++i) b.tick();
+  const uint64_t r = b.monitor(2).rises;
+  b.abort(2);
+  b.tick();
+  EXPECT_FALSE(b.out(2).busy);
+  for (int i = 0; i < 300; ++i) b.tick();
+  EXPECT_EQ(b.monitor(2).rises, r) << "STEP rose after the abort";
+  // ABORT and STOP on the same edge: abort.
+  run_to(b, When::Accel, 2);
+  const uint64_t r2 = b.monitor(2).rises;
+  b.abort(2);
+  b.stop(2);
+  b.tick();
+  EXPECT_FALSE(b.out(2).busy);
+  for (int i = 0; i < 300; ++i) b.tick();
+  EXPECT_EQ(b.monitor(2).rises, r2);
+  // STOP on an idle axis: nothing happens, the next move runs normally.
+  b.stop(2);
+  b.tick();
+  EXPECT_FALSE(b.out(2).busy || b.out(2).err || b.out(2).done);
+  new_move_runs(b, "after stop on idle");
+  b.finish();
+}
 
 // ---------------------------------------------------------------------------------------------
 // Direction reversal between chained moves: every move reverses, short and fast moves so that
@@ -426,7 +495,13 @@ std::vector<RuleCase> rule_cases() {
       {"v_start == 0, acc == 0, dec_frac != 0 (not decelerating at once)",
        [](AxisMove& m) { m.v_start = 0; m.acc = 0; m.dec_step = 0; m.dec_frac = 1; m.v_dec = m.v_max; }, true},
       {"several rules at once", [](AxisMove& m) { m.v_max = 0; m.acc_steps = ~0u; m.dec = 0; m.v_end = 0; }, true},
-      // Room for the rules of STOP/jog moves (kErrJogNoDec and others) when the core has them.
+      {"v_end == 0 && dec > v_max (floor above v_max)",
+       [](AxisMove& m) { m.v_end = 0; m.v_max = m.v_start = m.v_dec = 1ull << 40; m.dec = (1ull << 40) + 1; }, true},
+      // Jog moves (accepted ones run until STOP: tests/model/test_stop.cpp, test_wb_model.cpp).
+      {"jog with dec == 0", [](AxisMove& m) { m.jog = true; m.dec = 0; }, true},
+      {"jog with v_start == 0 && acc == 0", [](AxisMove& m) { m.jog = true; m.v_start = 0; m.acc = 0; }, true},
+      {"jog with v_start > v_max", [](AxisMove& m) { m.jog = true; m.v_start = m.v_max + 1; }, true},
+      {"jog with v_max == 0", [](AxisMove& m) { m.jog = true; m.v_max = m.v_start = 0; }, true},
   };
 }
 
