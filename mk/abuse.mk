@@ -1,11 +1,17 @@
 # SPDX-License-Identifier: Apache-2.0
 # Abuse jobs (docs/TESTING.md): the C++ under ASan+UBSan, libFuzzer targets, the long soak.
-#   make test-sanitize          build $(BUILD)-san with -DHEXSTEP_SANITIZE=ON, run ctest there
-#   make fuzz FUZZ_SECONDS=N    build $(BUILD)-fuzz with clang, run each fuzz target N seconds
+#   make test-sanitize          build $(BUILD)-fuzz (clang, ASan+UBSan, libFuzzer coverage
+#                               instrumentation, without the Verilated RTL: model, planner, CLI,
+#                               job files, bench harness, fuzz corpus replay) and run ctest
+#                               there; part of `make test`. One build serves the sanitizer tests
+#                               and the fuzz targets (two separate builds did not fit the budget)
+#   make test-sanitize-rtl      the same with the Verilated RTL and the co-simulation harness
+#                               ($(BUILD)-san-rtl; too slow to build for `make test` on 2 cores)
+#   make fuzz FUZZ_SECONDS=N    build the fuzz targets in $(BUILD)-fuzz, run each N seconds
 #   make soak SOAK_MOVES=N      N random moves through RTL and model, two processes (log below)
 # `make test` runs test-sanitize and fuzz-short (each target FUZZ_SHORT_SECONDS); the soak's
 # slice in `make test` is ctest Cosim.RandomJobs2000Moves (and soak.slice).
-SAN_BUILD     := $(BUILD)-san
+SAN_RTL_BUILD := $(BUILD)-san-rtl
 FUZZ_BUILD    := $(BUILD)-fuzz
 FUZZ_DIR      := $(abspath $(FUZZ_BUILD))
 FUZZ_TARGETS  := job json cli planner
@@ -22,17 +28,21 @@ SOAK_LOG      := $(BUILD)/soak.log
 FUZZ_CC       ?= clang-14
 FUZZ_CXX      ?= clang++-14
 
-.PHONY: test-sanitize fuzz fuzz-build fuzz-short soak
+.PHONY: test-sanitize test-sanitize-rtl fuzz fuzz-build fuzz-short soak
 
 test: test-sanitize fuzz-short
 
-$(SAN_BUILD)/build.ninja:
-	cmake -S . -B $(SAN_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXSTEP_SANITIZE=ON
+$(SAN_RTL_BUILD)/build.ninja:
+	cmake -S . -B $(SAN_RTL_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXSTEP_SANITIZE=ON
 
 # ctest label `tool`: synthesis/formal scripts, not C++ under test.
-test-sanitize: deps $(SAN_BUILD)/build.ninja
-	cmake --build $(SAN_BUILD) -j $(JOBS)
-	cd $(SAN_BUILD) && $(SAN_COSIM_ENV) $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
+test-sanitize: deps $(FUZZ_BUILD)/build.ninja
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	cd $(FUZZ_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
+
+test-sanitize-rtl: deps $(SAN_RTL_BUILD)/build.ninja
+	cmake --build $(SAN_RTL_BUILD) -j $(JOBS)
+	cd $(SAN_RTL_BUILD) && $(SAN_COSIM_ENV) $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
 
 $(FUZZ_BUILD)/build.ninja:
 	CC=$(FUZZ_CC) CXX=$(FUZZ_CXX) cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
