@@ -59,7 +59,7 @@ define run_fuzz
 	@set -e; for t in $(FUZZ_TARGETS); do \
 	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
 	  echo "fuzz: $$t for $(1) s"; \
-	  $(SAN_ENV) $(FUZZ_DIR)/fuzz/fuzz_$$t -max_total_time=$(1) -timeout=10 -max_len=8192 \
+	  $(SAN_ENV) $(FUZZ_DIR)/fuzz/fuzz_$$t -max_total_time=$(1) -timeout=10 -max_len=8192 $(2) \
 	    -print_final_stats=1 -artifact_prefix=$(FUZZ_DIR)/crash-$$t- $(FUZZ_DIR)/corpus/$$t $(CURDIR)/fuzz/corpus/$$t \
 	    > $(FUZZ_BUILD)/fuzz_$$t.log 2>&1 || { tail -n 60 $(FUZZ_BUILD)/fuzz_$$t.log; exit 1; }; \
 	  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" $(FUZZ_BUILD)/fuzz_$$t.log | tr '\n' ' '; echo; \
@@ -69,8 +69,10 @@ endef
 fuzz: fuzz-build
 	$(call run_fuzz,$(FUZZ_SECONDS))
 
+# The slice in `make test` uses a fixed seed: a slower machine runs a prefix of the same inputs,
+# so a passing slice does not turn red by chance (`make fuzz` explores with fresh seeds).
 fuzz-short: fuzz-build
-	$(call run_fuzz,$(FUZZ_SHORT_SECONDS))
+	$(call run_fuzz,$(FUZZ_SHORT_SECONDS),-seed=1)
 
 # Two processes (one per core) with seeds S and S+1; every job's seed is in $(SOAK_LOG) with
 # the one command that replays it.

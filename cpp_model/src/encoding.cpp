@@ -148,6 +148,9 @@ EncodedMove encode_ramp(const RampProfile& p, real f, const Widths& w) {
   r.acc = acc_phase ? ar : 0;
   r.dec = dec_phase ? dr : 0;
   if (!dec_phase && ver == 0) r.v_end = vpr;  // constant speed to the end: floor = peak
+  // A deceleration faster than the peak speed per tick ends within one tick; the core refuses a
+  // floor (dec, when v_end is 0) above v_max, so the floor is the peak (docs/ARCHITECTURE.md).
+  if (r.v_end == 0 && r.dec > r.v_max) r.v_end = vpr;
 
   id.vp = reg_to_speed(vpr, f, w);
   id.a = acc_phase ? aq : 0;

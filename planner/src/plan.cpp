@@ -77,6 +77,8 @@ void fill_counts(PhasePlan& p) {
 namespace {
 
 constexpr real kMaxRampRatio = 1e12L;
+constexpr real kMaxSpeed = 1e12L;  // steps/s
+constexpr real kMaxAccel = 1e24L;  // steps/s^2
 
 void validate(const RampLimits& L) {
   detail::require_positive("--max-speed", L.v_max, "steps/s");
@@ -84,6 +86,14 @@ void validate(const RampLimits& L) {
   detail::require_positive("--decel", L.decel, "steps/s^2");
   detail::require_nonnegative("--start-speed", L.v_start, "steps/s");
   detail::require_nonnegative("--end-speed", L.v_end, "steps/s");
+  // Beyond any clock (a speed register holds < 1 step per cycle): keeps the arithmetic of the
+  // plan far from overflow and rounding to zero (found by fuzz_planner at 1e40 steps/s).
+  if (L.v_max > kMaxSpeed)
+    fail("--max-speed", "must be in (0, " + num(kMaxSpeed) + "] steps/s (got " + num(L.v_max) + ")");
+  if (L.accel > kMaxAccel)
+    fail("--accel", "must be in (0, " + num(kMaxAccel) + "] steps/s^2 (got " + num(L.accel) + ")");
+  if (L.decel > kMaxAccel)
+    fail("--decel", "must be in (0, " + num(kMaxAccel) + "] steps/s^2 (got " + num(L.decel) + ")");
   if (L.v_start > L.v_max)
     fail("--start-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_start) + ")");
   if (L.v_end > L.v_max)

@@ -281,6 +281,10 @@ TEST(JobIoErrors, DuplicateFields) {
       R"({"axis":1,"moves":[{"steps":1,"steps":2}]}]})";
   EXPECT_HAS(error_of(t), "axes[1].moves[0].steps: duplicate field");
   EXPECT_HAS(error_of(std::string(R"({"format":"hexstep-job","format":"hexstep-job"})")), "format: duplicate field");
+  // A key with an escaped control character (found by fuzz_job): the message stays one line.
+  const std::string m = error_of(std::string(R"({"format":"hexstep-job","ve\nr":1,"ve\nr":1})"));
+  EXPECT_HAS(m, "ve?r: duplicate field");
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
 }
 
 TEST(JobIoErrors, AxisIndex) {

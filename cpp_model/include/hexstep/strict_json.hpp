@@ -25,6 +25,15 @@ class StrictJsonError : public std::runtime_error {
   std::string path_;
 };
 
+// A key as it may appear in a one-line message: control characters become '?', "" stands for
+// the empty key.
+inline std::string printable_key(std::string key) {
+  if (key.empty()) return "\"\"";  // an empty key is named by its quotes
+  for (char& c : key)
+    if (static_cast<unsigned char>(c) < 0x20) c = '?';
+  return key;
+}
+
 // Parses `text`; a key repeated within one object is an error naming its path.
 inline nlohmann::json parse_strict_json(const std::string& text) {
   using json = nlohmann::json;
@@ -39,9 +48,9 @@ inline nlohmann::json parse_strict_json(const std::string& text) {
     std::string p;
     for (size_t i = 0; i + 1 < st.size(); ++i) {
       if (st[i].array) p += "[" + std::to_string(st[i].index) + "]";
-      else p += (p.empty() ? "" : ".") + st[i].key;
+      else p += (p.empty() ? "" : ".") + printable_key(st[i].key);
     }
-    return p + (p.empty() ? "" : ".") + key;
+    return p + (p.empty() ? "" : ".") + printable_key(key);
   };
   auto cb = [&](int, json::parse_event_t ev, json& parsed) -> bool {
     switch (ev) {
@@ -118,10 +127,7 @@ class JsonObject {
       if (!known) {
         std::string list;
         for (const char* f : fields_) list += (list.empty() ? "" : ", ") + std::string(f);
-        std::string key = it.key();
-        for (char& c : key)
-          if (static_cast<unsigned char>(c) < 0x20) c = '?';  // keep the message one line
-        error(sub(key), "unknown field (accepted here: " + list + ")");
+        error(sub(printable_key(it.key())), "unknown field (accepted here: " + list + ")");
       }
     }
   }
