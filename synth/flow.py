@@ -220,6 +220,9 @@ def build(name, out_root, results, strict):
             srcs.append(os.path.join(ROOT, "rtl", "boards", "hexstep_ecp5_pll.v"))
     else:
         srcs.append(os.path.join(ROOT, "synth", "hexstep_ooc.v"))
+    # Paths relative to the build directory: the WebAssembly tools reach relative paths through
+    # their '.'/'..' preopens everywhere, absolute ones not on every machine (e.g. under /tmp).
+    srcs = [os.path.relpath(p, bdir) for p in srcs]
     chp = "".join(f"chparam -set {k} {v} {t['top']}; " for k, v in params.items())
     synth_cmd = "synth_ice40" if fam == "ice40" else "synth_ecp5"
     script = (f"read_verilog {' '.join(srcs)}; {chp}"
@@ -248,11 +251,11 @@ def build(name, out_root, results, strict):
     if fam == "ice40":
         pnr += ["--asc", "design.asc"]
         if board:
-            pnr += ["--pcf", os.path.join(ROOT, t["constraints"])]
+            pnr += ["--pcf", os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
     else:
         pnr += ["--textcfg", "design.config"]
         if board:
-            pnr += ["--lpf", os.path.join(ROOT, t["constraints"])]
+            pnr += ["--lpf", os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
     rc, secs, over = run_pnr(pnr, bdir, os.path.join(bdir, "nextpnr.log"))
     res["nextpnr_seconds"] = round(secs, 1)
     with open(os.path.join(bdir, "nextpnr.log")) as f:
