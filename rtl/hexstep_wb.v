@@ -141,8 +141,13 @@ module hexstep_wb #(
   reg  [31:0]      irq_en_q, irq_en_d;
   reg  [31:0]      pend_q, pend_d;
   reg  [NAXES*MW-1:0]    stg_q, stg_d;        // staging words
-  reg  [NAXES*MW-1:0]    q0_q, q0_d;          // queue head (drives the core)
-  reg  [NAXES*MW-1:0]    q1_q, q1_d;          // queue second entry
+  // The 2-deep queue is a ring of two slots per axis: an entry stays in the slot it was pushed
+  // into, and the head pointer selects the slot that drives the core. (A shifting queue needs a
+  // 3-way multiplexer in front of every bit of the head; the ring only writes slots from the
+  // staging words and reads the head through one 2-way multiplexer.)
+  reg  [NAXES*MW-1:0]    s0_q, s0_d;          // slot 0
+  reg  [NAXES*MW-1:0]    s1_q, s1_d;          // slot 1
+  reg  [NAXES-1:0]       hp_q, hp_d;          // head slot: the entry the core starts next
   reg  [NAXES*NC*32-1:0] cfg_q, cfg_d;        // pulse timing and polarity
 
   // ---- bus request decode ----
@@ -188,34 +193,68 @@ module hexstep_wb #(
     end
   endgenerate
 
+  // ---- read data ----
+  // Every word of a block is placed in a flat vector and selected by the word index, then the
+  // block by its number: parallel multiplexers of depth log2, not a priority chain (the read
+  // path was the longest combinational path of the design; docs/SYNTH.md).
+  // Global block: words 0..7 (START, ABORT and STOP read 0), the rest of the block reads 0.
+  wire [8*32-1:0] gwords;
+  assign gwords[G_ID*32 +: 32]       = ID_VALUE;
+  assign gwords[G_VERSION*32 +: 32]  = {8'd0, NAXES[7:0], VER_MAJOR, VER_MINOR};
+  assign gwords[G_START*32 +: 32]    = 32'h0;
+  assign gwords[G_ABORT*32 +: 32]    = 32'h0;
+  assign gwords[G_GSTATUS*32 +: 32]  = {30'd0, es2_q, estop_q};
+  assign gwords[G_IRQ_EN*32 +: 32]   = irq_en_q;
+  assign gwords[G_IRQ_PEND*32 +: 32] = pend_q;
+  assign gwords[G_STOP*32 +: 32]     = 32'h0;
+  wire [31:0] grd = (wb_adr_i[6:5] == 2'b00) ? gwords[{wb_adr_i[4:2], 5'd0} +: 32] : 32'h0;
+  // Axis blocks: staging words 0..NW-1, CMD (reads 0), STATUS, ERR, POS_LO, POS_HI, config
+  // words, then zeros up to word 31 (each word assigned once at its index: a gap or an overlap
+  // is a lint error). Axis k's value is ard[k*32 +: 32]; slots NAXES..7 read 0.
+  wire [8*32-1:0] ard;
+  generate
+    for (g = 0; g < 8; g = g + 1) begin : g_rd
+      if (g < NAXES) begin : g_axis
+        wire [32*32-1:0] words;
+        assign words[0 +: MW]               = stg_q[g*MW +: MW];
+        assign words[W_CMD*32 +: 32]        = 32'h0;
+        assign words[W_STATUS*32 +: 32]     = {26'd0, 2'd2 - cnt_q[g*2 +: 2], run_q[g],
+                                               phase_i[g*2 +: 2], busy_i[g]};
+        assign words[W_ERR*32 +: 32]        = {29'd0, errf_q[g*3 +: 3]};
+        assign words[W_POS_LO*32 +: 32]     = pos64[g*64 +: 32];
+        assign words[W_POS_HI*32 +: 32]     = poshi_q[g*32 +: 32];
+        assign words[W_CFG*32 +: NC*32]     = cfg_q[g*NC*32 +: NC*32];
+        assign words[32*32-1:(W_CFG+NC)*32] = {((32-W_CFG-NC)*32){1'b0}};
+        assign ard[g*32 +: 32] = words[{wb_adr_i[6:2], 5'd0} +: 32];
+      end else begin : g_none
+        assign ard[g*32 +: 32] = 32'h0;
+      end
+    end
+  endgenerate
+  wire [31:0] axn   = blk - 32'd2;            // axis number of an axis block
+  wire        a_hit = (blk >= 32'd2) && (axn < NAXES);
+  wire [31:0] rdata = g_hit ? grd : a_hit ? ard[{axn[2:0], 5'd0} +: 32] : 32'h0;
+
   integer k, i;
   reg        hit, push, overrun, ok_push, estop_rise;
   reg [1:0]  cnt;
   reg [2:0]  eset;
-  reg [31:0] rdata, w;
+  reg [31:0] w;
 
   always @(*) begin
-    stg_d = stg_q;  cfg_d = cfg_q;  q0_d = q0_q;  q1_d = q1_q;
+    stg_d = stg_q;  cfg_d = cfg_q;  s0_d = s0_q;  s1_d = s1_q;
+    hp_d = hp_q;
     cnt_d = cnt_q;  run_d = run_q;  errf_d = errf_q;  poshi_d = poshi_q;
     irq_en_d = irq_en_q;  pend_d = pend_q;
     start_cmd_d = {NAXES{1'b0}};
     abort_cmd_d = {NAXES{1'b0}};
     stop_cmd_d = {NAXES{1'b0}};
-    rdata = 32'h0;
     i = 0;
 
     // ---- global registers ----
     estop_rise = es2_q & ~estop_q;
     estop_d    = es2_q | (estop_q & ~(wr & g_hit & (widx == G_GSTATUS) & wdat[0]));
     if (g_hit) begin
-      case (widx)
-        G_ID:       rdata = ID_VALUE;
-        G_VERSION:  rdata = {8'd0, NAXES[7:0], VER_MAJOR, VER_MINOR};
-        G_GSTATUS:  rdata = {30'd0, es2_q, estop_q};
-        G_IRQ_EN:   rdata = irq_en_q;
-        G_IRQ_PEND: rdata = pend_q;
-        default:    rdata = 32'h0;            // START, ABORT, STOP read 0; the rest unmapped
-      endcase
       if (wr) begin
         if (widx == G_START)    start_cmd_d = wdat[NAXES-1:0];
         if (widx == G_ABORT)    abort_cmd_d = wdat[NAXES-1:0];
@@ -233,24 +272,11 @@ module hexstep_wb #(
       // bus access
       if (hit) begin
         for (i = 0; i < NW; i = i + 1)
-          if (widx == i) begin
-            rdata = stg_q[(k*NW+i)*32 +: 32];
-            if (wr) stg_d[(k*NW+i)*32 +: 32] =
-              ((stg_q[(k*NW+i)*32 +: 32] & ~bmask) | wdat) & stg_mask(i);
-          end
+          if (wr && widx == i) stg_d[(k*NW+i)*32 +: 32] =
+            ((stg_q[(k*NW+i)*32 +: 32] & ~bmask) | wdat) & stg_mask(i);
         for (i = 0; i < NC; i = i + 1)
-          if (widx == W_CFG + i) begin
-            rdata = cfg_q[(k*NC+i)*32 +: 32];
-            if (wr) cfg_d[(k*NC+i)*32 +: 32] =
-              ((cfg_q[(k*NC+i)*32 +: 32] & ~bmask) | wdat) & cfg_mask(i);
-          end
-        case (widx)
-          W_STATUS: rdata = {26'd0, 2'd2 - cnt, run_q[k], phase_i[k*2 +: 2], busy_i[k]};
-          W_ERR:    rdata = {29'd0, errf_q[k*3 +: 3]};
-          W_POS_LO: rdata = pos64[k*64 +: 32];
-          W_POS_HI: rdata = poshi_q[k*32 +: 32];
-          default:  ;
-        endcase
+          if (wr && widx == W_CFG + i) cfg_d[(k*NC+i)*32 +: 32] =
+            ((cfg_q[(k*NC+i)*32 +: 32] & ~bmask) | wdat) & cfg_mask(i);
         if (rd && widx == W_POS_LO) poshi_d[k*32 +: 32] = pos64[k*64+32 +: 32];
         if (wr && widx == W_CMD) push = wdat[0];
         if (wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
@@ -264,18 +290,18 @@ module hexstep_wb #(
       end else begin
         if (go[k]) run_d[k] = 1'b1;
         else if (run_q[k] & done_i[k]) run_d[k] = 1'b0;
+        // A start pops the head (the other slot becomes the head); a push writes the first
+        // free slot behind the head as it was before this edge (with a pop on the same edge
+        // and a full queue, that is the slot being popped).
         if (go[k]) begin
-          q0_d[k*MW +: MW] = q1_q[k*MW +: MW];
-          if (ok_push) begin
-            if (cnt == 2'd1) q0_d[k*MW +: MW] = stg_q[k*MW +: MW];
-            else             q1_d[k*MW +: MW] = stg_q[k*MW +: MW];
-          end else begin
-            cnt_d[k*2 +: 2] = cnt - 2'd1;
-          end
+          hp_d[k] = ~hp_q[k];
+          if (!ok_push) cnt_d[k*2 +: 2] = cnt - 2'd1;
         end else if (ok_push) begin
-          if (cnt == 2'd0) q0_d[k*MW +: MW] = stg_q[k*MW +: MW];
-          else             q1_d[k*MW +: MW] = stg_q[k*MW +: MW];
           cnt_d[k*2 +: 2] = cnt + 2'd1;
+        end
+        if (ok_push) begin
+          if (hp_q[k] ^ cnt[0]) s1_d[k*MW +: MW] = stg_q[k*MW +: MW];
+          else                  s0_d[k*MW +: MW] = stg_q[k*MW +: MW];
         end
       end
 
@@ -300,6 +326,7 @@ module hexstep_wb #(
       start_cmd_q <= {NAXES{1'b0}};  abort_cmd_q <= {NAXES{1'b0}};
       stop_cmd_q <= {NAXES{1'b0}};
       run_q <= {NAXES{1'b0}};  cnt_q <= {NAXES*2{1'b0}};  errf_q <= {NAXES*3{1'b0}};
+      hp_q <= {NAXES{1'b0}};
       poshi_q <= {NAXES*32{1'b0}};  irq_en_q <= 32'h0;  pend_q <= 32'h0;
       stg_q <= {NAXES*MW{1'b0}};  cfg_q <= {NAXES{CFG_RESET}};
     end else begin
@@ -307,12 +334,12 @@ module hexstep_wb #(
       es1_q <= estop_i;  es2_q <= es1_q;  estop_q <= estop_d;
       start_cmd_q <= start_cmd_d;  abort_cmd_q <= abort_cmd_d;
       stop_cmd_q <= stop_cmd_d;
-      run_q <= run_d;  cnt_q <= cnt_d;  errf_q <= errf_d;
+      run_q <= run_d;  cnt_q <= cnt_d;  errf_q <= errf_d;  hp_q <= hp_d;
       poshi_q <= poshi_d;  irq_en_q <= irq_en_d;  pend_q <= pend_d;
       stg_q <= stg_d;  cfg_q <= cfg_d;
     end
-    q0_q <= q0_d;
-    q1_q <= q1_d;
+    s0_q <= s0_d;
+    s1_q <= s1_d;
   end
 
   assign wb_ack_o = ack_q;
@@ -324,20 +351,26 @@ module hexstep_wb #(
 
   // Core move inputs: the queue head, fields at their word positions (64-bit values span two
   // consecutive words, low word first).
+  wire [NAXES*MW-1:0] head;                   // the head entry of every axis
+  generate
+    for (g = 0; g < NAXES; g = g + 1) begin : g_head
+      assign head[g*MW +: MW] = hp_q[g] ? s1_q[g*MW +: MW] : s0_q[g*MW +: MW];
+    end
+  endgenerate
   generate
     for (g = 0; g < NAXES; g = g + 1) begin : g_ports
-      assign steps_o[g*STEP_W +: STEP_W]       = q0_q[g*MW + W_STEPS*32 +: STEP_W];
-      assign dir_o[g]                          = q0_q[g*MW + W_DIR*32];
-      assign jog_o[g]                          = q0_q[g*MW + W_DIR*32 + 1];
-      assign v_start_o[g*SPEED_W +: SPEED_W]   = q0_q[g*MW + W_V_START*32 +: SPEED_W];
-      assign v_max_o[g*SPEED_W +: SPEED_W]     = q0_q[g*MW + W_V_MAX*32 +: SPEED_W];
-      assign v_end_o[g*SPEED_W +: SPEED_W]     = q0_q[g*MW + W_V_END*32 +: SPEED_W];
-      assign v_dec_o[g*SPEED_W +: SPEED_W]     = q0_q[g*MW + W_V_DEC*32 +: SPEED_W];
-      assign acc_o[g*ACC_W +: ACC_W]           = q0_q[g*MW + W_ACC*32 +: ACC_W];
-      assign dec_o[g*ACC_W +: ACC_W]           = q0_q[g*MW + W_DEC*32 +: ACC_W];
-      assign acc_steps_o[g*STEP_W +: STEP_W]   = q0_q[g*MW + W_ACC_STEPS*32 +: STEP_W];
-      assign dec_step_o[g*STEP_W +: STEP_W]    = q0_q[g*MW + W_DEC_STEP*32 +: STEP_W];
-      assign dec_frac_o[g*DFRAC_W +: DFRAC_W]  = q0_q[g*MW + W_DEC_FRAC*32 +: DFRAC_W];
+      assign steps_o[g*STEP_W +: STEP_W]       = head[g*MW + W_STEPS*32 +: STEP_W];
+      assign dir_o[g]                          = head[g*MW + W_DIR*32];
+      assign jog_o[g]                          = head[g*MW + W_DIR*32 + 1];
+      assign v_start_o[g*SPEED_W +: SPEED_W]   = head[g*MW + W_V_START*32 +: SPEED_W];
+      assign v_max_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_MAX*32 +: SPEED_W];
+      assign v_end_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_END*32 +: SPEED_W];
+      assign v_dec_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_DEC*32 +: SPEED_W];
+      assign acc_o[g*ACC_W +: ACC_W]           = head[g*MW + W_ACC*32 +: ACC_W];
+      assign dec_o[g*ACC_W +: ACC_W]           = head[g*MW + W_DEC*32 +: ACC_W];
+      assign acc_steps_o[g*STEP_W +: STEP_W]   = head[g*MW + W_ACC_STEPS*32 +: STEP_W];
+      assign dec_step_o[g*STEP_W +: STEP_W]    = head[g*MW + W_DEC_STEP*32 +: STEP_W];
+      assign dec_frac_o[g*DFRAC_W +: DFRAC_W]  = head[g*MW + W_DEC_FRAC*32 +: DFRAC_W];
       assign step_high_o[g*PULSE_W +: PULSE_W] = cfg_q[(g*NC+0)*32 +: PULSE_W];
       assign step_low_o[g*PULSE_W +: PULSE_W]  = cfg_q[(g*NC+1)*32 +: PULSE_W];
       assign dir_setup_o[g*PULSE_W +: PULSE_W] = cfg_q[(g*NC+2)*32 +: PULSE_W];

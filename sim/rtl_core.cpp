@@ -3,6 +3,7 @@
 // then one rising edge is evaluated, matching CoreSim::tick().
 #include "rtl_core.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <string>
@@ -36,10 +37,14 @@ void put(T& v, unsigned lsb, unsigned width, uint64_t value) {
 }
 template <std::size_t N>
 uint64_t get(const VlWide<N>& v, unsigned lsb, unsigned width) {
+  // Word by word (at most three 32-bit words for 64 bits): read for every axis every cycle.
   uint64_t r = 0;
-  for (unsigned b = 0; b < width; ++b) {
-    const unsigned bit = lsb + b;
-    if ((v[bit / 32] >> (bit % 32)) & 1u) r |= 1ull << b;
+  for (unsigned got = 0, bit = lsb; got < width;) {
+    const unsigned off = bit % 32;
+    const unsigned n = std::min(32u - off, width - got);
+    r |= ((static_cast<uint64_t>(v[bit / 32]) >> off) & Widths::mask(n)) << got;
+    got += n;
+    bit += n;
   }
   return r;
 }
@@ -137,8 +142,12 @@ void RtlCore::tick(const CoreInputs& in) {
     put(t.dir_inv_i, k, 1, p.dir_invert);
   }
   impl_->packed = true;
-  t.eval();
-  if (impl_->trace) impl_->trace->dump(impl_->cycles * 10);
+  // Verilator settles the input-driven logic at the start of every eval(), so the rising edge
+  // below sees the new inputs without a separate eval; that one is needed only for the trace.
+  if (impl_->trace) {
+    t.eval();
+    impl_->trace->dump(impl_->cycles * 10);
+  }
   t.clk_i = 1;
   t.eval();
   if (impl_->trace) impl_->trace->dump(impl_->cycles * 10 + 5);
