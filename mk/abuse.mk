@@ -1,24 +1,27 @@
 # SPDX-License-Identifier: Apache-2.0
 # Abuse jobs (docs/TESTING.md): the C++ under ASan+UBSan, libFuzzer targets, the long soak.
 #   make test-sanitize          build $(BUILD)-fuzz (clang, ASan+UBSan, libFuzzer coverage
-#                               instrumentation, without the Verilated RTL: model, planner, CLI,
-#                               job files, bench harness, fuzz corpus replay) and run ctest
-#                               there; part of `make test`. One build serves the sanitizer tests
-#                               and the fuzz targets (two separate builds did not fit the budget)
-#   make test-sanitize-rtl      the same with the Verilated RTL and the co-simulation harness
-#                               ($(BUILD)-san-rtl; too slow to build for `make test` on 2 cores)
+#                               instrumentation: model, planner, CLI, job files, bench harness,
+#                               co-simulation harness sim/ and its tests with the Verilated RTL,
+#                               whose generated C++ and runtime are compiled uninstrumented at
+#                               -O1, top CMakeLists.txt; not the SoC) and run ctest there with
+#                               shorter random co-simulations ($(SAN_COSIM_ENV)); part of
+#                               `make test`. One build serves the sanitizer tests and the fuzz
+#                               targets
+#   make test-sanitize-rtl      the same build and tests at full size (the default move and cycle
+#                               counts of the random co-simulations); not in `make test`
 #   make fuzz FUZZ_SECONDS=N    build the fuzz targets in $(BUILD)-fuzz, run each N seconds
 #   make soak SOAK_MOVES=N      N random moves through RTL and model, two processes (log below)
 # `make test` runs test-sanitize and fuzz-short (each target FUZZ_SHORT_SECONDS); the soak's
 # slice in `make test` is ctest Cosim.RandomJobs2000Moves (and soak.slice).
-SAN_RTL_BUILD := $(BUILD)-san-rtl
 FUZZ_BUILD    := $(BUILD)-fuzz
 FUZZ_DIR      := $(abspath $(FUZZ_BUILD))
 FUZZ_TARGETS  := job json cli planner
 FUZZ_SECONDS  ?= 60
 FUZZ_SHORT_SECONDS ?= 12
-# Long co-simulation tests under the sanitizers: fewer moves/cycles (tests/rtl/test_cosim.cpp).
-SAN_COSIM_ENV := COSIM_MOVES=336 COSIM_CYCLES=300000 SOAK_SLICE_MOVES=42
+# Long co-simulation tests under the sanitizers in `make test`: fewer moves/cycles
+# (tests/rtl/test_cosim.cpp, tests/rtl/test_wb_model.cpp, tests/soak/slice.sh).
+SAN_COSIM_ENV := COSIM_MOVES=84 COSIM_CYCLES=300000 SOAK_SLICE_MOVES=12 WB_MODEL_CYCLES=300000
 SAN_ENV       := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 SOAK_MOVES    ?= 100000
 ifeq ($(origin SOAK_SEED),undefined)
@@ -28,27 +31,32 @@ SOAK_LOG      := $(BUILD)/soak.log
 FUZZ_CC       ?= clang-14
 FUZZ_CXX      ?= clang++-14
 
-.PHONY: test-sanitize test-sanitize-rtl fuzz fuzz-build fuzz-short soak
+.PHONY: test-sanitize test-sanitize-rtl fuzz-configure fuzz fuzz-build fuzz-short soak
 
 test: test-sanitize fuzz-short
 
-$(SAN_RTL_BUILD)/build.ninja:
-	cmake -S . -B $(SAN_RTL_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXSTEP_SANITIZE=ON
-
 # ctest label `tool`: synthesis/formal scripts, not C++ under test.
-test-sanitize: deps $(FUZZ_BUILD)/build.ninja
+test-sanitize: deps fuzz-configure
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	cd $(FUZZ_BUILD) && $(SAN_COSIM_ENV) $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
+
+test-sanitize-rtl: deps fuzz-configure
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	cd $(FUZZ_BUILD) && $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
 
-test-sanitize-rtl: deps $(SAN_RTL_BUILD)/build.ninja
-	cmake --build $(SAN_RTL_BUILD) -j $(JOBS)
-	cd $(SAN_RTL_BUILD) && $(SAN_COSIM_ENV) $(SAN_ENV) ctest --output-on-failure -j $(JOBS) -LE tool
+# Configured whenever these flags differ from the last configure's (kept in $(FUZZ_STAMP)), so
+# that an existing directory follows a change here (e.g. the RTL joining this build).
+FUZZ_CMAKE_FLAGS := -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHEXSTEP_RTL=ON -DHEXSTEP_SOC=OFF \
+  -DHEXSTEP_FUZZ=ON -DHEXSTEP_SANITIZE=ON -DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link
+FUZZ_STAMP    := $(FUZZ_BUILD)/hexstep-configure-flags.txt
+fuzz-configure:
+	@want='$(FUZZ_CC) $(FUZZ_CXX) $(FUZZ_CMAKE_FLAGS)'; \
+	 if [ ! -f $(FUZZ_BUILD)/build.ninja ] || [ "$$(cat $(FUZZ_STAMP) 2>/dev/null)" != "$$want" ]; then \
+	   echo "CC=$(FUZZ_CC) CXX=$(FUZZ_CXX) cmake -S . -B $(FUZZ_BUILD) $(FUZZ_CMAKE_FLAGS)"; \
+	   CC=$(FUZZ_CC) CXX=$(FUZZ_CXX) cmake -S . -B $(FUZZ_BUILD) $(FUZZ_CMAKE_FLAGS) && echo "$$want" > $(FUZZ_STAMP); \
+	 fi
 
-$(FUZZ_BUILD)/build.ninja:
-	CC=$(FUZZ_CC) CXX=$(FUZZ_CXX) cmake -S . -B $(FUZZ_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  -DHEXSTEP_RTL=OFF -DHEXSTEP_FUZZ=ON -DHEXSTEP_SANITIZE=ON -DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link
-
-fuzz-build: deps $(FUZZ_BUILD)/build.ninja
+fuzz-build: deps fuzz-configure
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_TARGETS))
 
 # Each target runs $(1) seconds from its seed corpus (fuzz/corpus/<t>, read only); new inputs

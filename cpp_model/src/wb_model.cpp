@@ -28,6 +28,7 @@ WbModel::WbModel(const Widths& w) : w_(w), core_(w) { reset(); }
 
 void WbModel::reset() {
   core_.reset();
+  core_in_ = CoreInputs{};
   ack_q_ = irq_q_ = false;
   dat_q_ = 0;
   es1_ = es2_ = estop_ = false;
@@ -227,6 +228,7 @@ void WbModel::tick(const WbPins& in) {
 
   // ---- commit: the core sees the old register state, the block its next state ----
   core_.tick(ci);
+  core_in_ = ci;
   ack_q_ = req;
   dat_q_ = rd ? rdata : 0;
   irq_q_ = (pend_n & irq_en_n) != 0;

@@ -109,6 +109,31 @@ std::vector<NamedJob> directed_jobs() {
   return v;
 }
 
+AxisMove cruise(uint32_t steps, uint64_t speed, bool dir) {
+  AxisMove m;
+  m.steps = steps;
+  m.dir = dir;
+  m.v_start = m.v_max = m.v_end = m.v_dec = speed;
+  m.dec_step = steps;
+  return m;
+}
+
+AxisMove bus_trapezoid(uint32_t steps, bool dir) {
+  AxisMove m;
+  m.steps = steps;
+  m.dir = dir;
+  m.v_start = 1ull << 58;
+  m.v_max = 1ull << 61;
+  m.acc = 1ull << 43;
+  m.dec = 1ull << 43;
+  m.v_end = 1ull << 58;
+  m.v_dec = (1ull << 61) - (1ull << 54);
+  m.acc_steps = steps / 4;
+  m.dec_step = steps - steps / 4;
+  m.dec_frac = 0x80000000u;
+  return m;
+}
+
 uint64_t test_seed() {
   if (const char* s = std::getenv("SEED")) return std::strtoull(s, nullptr, 0);
   return std::random_device{}() ^ (uint64_t(std::random_device{}()) << 32);

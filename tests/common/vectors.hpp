@@ -41,6 +41,12 @@ Ramp random_ramp(std::mt19937_64& rng);
 // Random raw register values, valid or not (the core must refuse the invalid ones cleanly).
 AxisMove random_raw_move(std::mt19937_64& rng);
 PulseConfig random_pulse(std::mt19937_64& rng);
+// A constant-speed move: `steps` steps at `speed` (2^-64 step per tick) in every phase
+// register (v_start = v_max = v_end = v_dec), decelerating from the last step.
+AxisMove cruise(uint32_t steps, uint64_t speed, bool dir = true);
+// A short trapezoid for the bus tests: from 1/64 to 1/8 step per tick at 2^-21 step/tick^2
+// (2^43, the largest power of two in the 44-bit ACC/DEC registers), cruise, back to 1/64.
+AxisMove bus_trapezoid(uint32_t steps, bool dir = true);
 // A job with `moves_per_axis` moves on each of the six axes, mostly planned ramps.
 NamedJob random_job(std::mt19937_64& rng, unsigned moves_per_axis, bool raw_too);
 

@@ -4,9 +4,9 @@
 //     reset and ABORT in every phase of a move, then a new move; direction reversal between
 //     chained moves with DIR setup/hold; every refusal rule of docs/ARCHITECTURE.md; position
 //     counter wrap-around (a POS_W = 8 build of the same RTL against CoreModel with pos = 8);
-//   bus (rtl/hexstep_top.v through sim/wb_bfm, pins == CoreModel fed by a reference of the
-//     documented queue semantics): E-STOP during chained moves, queue overrun during motion,
-//     bus writes to every register during motion.
+//   bus (rtl/hexstep_top.v through sim/wb_bfm == the register-block model WbModel at every
+//     edge, tests/common/wb_ref.hpp): E-STOP during chained moves, queue overrun during
+//     motion, bus writes to every register during motion.
 // In every test the other axes run moves of their own; besides RTL == model, an independent
 // pin monitor checks the documented pulse timing (exact high time, minimum low time, DIR setup
 // and hold) and each axis's step count and position are checked against the moves it ran.
@@ -16,7 +16,6 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -31,14 +30,13 @@
 #include "vectors.hpp"
 #include "verilated.h"
 #include "wb_bfm.hpp"
+#include "wb_ref.hpp"
 
 using namespace hexstep;
 using namespace hexstep::test;
 namespace R = hexstep::regs;
 
 namespace {
-
-constexpr uint32_t kAllAxes = (1u << kNumAxes) - 1u;
 
 // ---------------------------------------------------------------------------------------------
 // Moves. Speeds in 2^-64 step per tick.
@@ -59,14 +57,6 @@ AxisMove trapezoid(uint32_t steps, bool dir = true) {
   m.acc_steps = steps / 2;
   m.dec_step = steps > 32 ? steps - 16 : steps / 2;
   m.dec_frac = 0x80000000u;
-  return m;
-}
-AxisMove cruise(uint32_t steps, uint64_t speed, bool dir = true) {
-  AxisMove m;
-  m.steps = steps;
-  m.dir = dir;
-  m.v_start = m.v_max = m.v_end = m.v_dec = speed;
-  m.dec_step = steps;
   return m;
 }
 int64_t signed_steps(const AxisMove& m) { return m.dir ? int64_t(m.steps) : -int64_t(m.steps); }
@@ -695,123 +685,13 @@ TEST(Faults, PositionCounterWrapsAround) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Through the Wishbone top (hexstep_top): a reference of the documented queue semantics around
-// CoreModel, fed at every RTL edge (as tests/rtl/test_wb.cpp does), with the E-STOP latch added
-// as docs/ARCHITECTURE.md describes it: the pin's first sampled-high edge is edge E, the core is
-// aborted at edge E+3 and at every edge while the latch is set; pushes and starts are dropped.
+// Through the Wishbone top (hexstep_top): the golden register-block model WbModel beside it
+// (tests/common/wb_ref.hpp: ack, read data, IRQ, STEP/DIR after every edge), plus the E-STOP
+// timing of docs/ARCHITECTURE.md checked directly: the pin's first sampled-high edge is edge E,
+// the core is aborted at edge E+3 and at every edge while the latch is set; pushes and starts
+// are dropped.
 
-constexpr uint32_t ax(unsigned k, uint32_t reg) { return R::AXIS_BASE + k * R::AXIS_STRIDE + reg; }
-
-struct WbRef {
-  explicit WbRef(WbTop& b) : bus(b) { b.on_edge = [this] { edge(); }; }
-  WbTop& bus;
-  CoreModel model;
-  CoreInputs in;
-  std::array<std::deque<AxisMove>, kNumAxes> q;
-  uint32_t run = 0, start_next = 0, abort_next = 0;
-  std::function<void()> on_ack;
-  uint64_t mismatches = 0, edges = 0;
-  std::array<uint64_t, kNumAxes> rises{};
-  std::array<std::vector<uint64_t>, kNumAxes> starts, dones;
-  // E-STOP: edge index of the pin's first sampled-high edge (-1: none), latch state.
-  int64_t estop_edge = -1;
-  bool latched = false;
-  std::vector<std::string> report;
-  std::string context;  // what the test is doing (in mismatch reports)
-
-  void arm(std::function<void()> f) { on_ack = std::move(f); }
-  void edge() {
-    if (estop_edge >= 0 && int64_t(edges) == estop_edge + 3) latched = true;
-    uint32_t start = 0;
-    const uint32_t abort = latched ? kAllAxes : abort_next;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      const uint32_t b = 1u << k;
-      const bool chain = (run & b) && model.out(k).done;
-      if (abort & b) {
-        q[k].clear();
-        run &= ~b;
-        continue;
-      }
-      if (!q[k].empty() && (((start_next & b) && !(run & b)) || chain)) {
-        in.move[k] = q[k].front();
-        q[k].pop_front();
-        start |= b;
-        run |= b;
-        starts[k].push_back(edges);
-      } else if (chain) {
-        run &= ~b;
-      }
-    }
-    in.start_mask = start;
-    in.abort_mask = abort;
-    std::array<bool, kNumAxes> prev{};
-    for (unsigned k = 0; k < kNumAxes; ++k) prev[k] = model.axis(k).step_level();
-    model.tick(in);
-    start_next = abort_next = 0;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      if (model.axis(k).step_level() && !prev[k]) ++rises[k];
-      if (model.out(k).done) dones[k].push_back(edges);
-      const AxisOutputs o = model.out(k);
-      if (o.step != bus.step(k) || o.dir != bus.dir(k)) {
-        if (report.size() < 10)
-          report.push_back("edge " + std::to_string(edges) + " axis " + std::to_string(k) + ": model step/dir " +
-                           std::to_string(o.step) + std::to_string(o.dir) + ", rtl " +
-                           std::to_string(bus.step(k)) + std::to_string(bus.dir(k)) +
-                           (context.empty() ? "" : " (" + context + ")"));
-        ++mismatches;
-      }
-    }
-    ++edges;
-    if (bus.ack() && on_ack) {
-      auto f = std::move(on_ack);
-      on_ack = nullptr;
-      f();
-    }
-  }
-  bool idle() const {
-    for (unsigned k = 0; k < kNumAxes; ++k)
-      if (model.out(k).busy || ((run >> k) & 1u)) return false;
-    return true;
-  }
-  std::string report_text() const {
-    std::string t;
-    for (const std::string& r : report) t += r + "\n";
-    return t;
-  }
-};
-
-void write_move(WbTop& bus, unsigned k, const AxisMove& m) {
-  auto w64 = [&](uint32_t lo, uint64_t v) {
-    bus.write(ax(k, lo), static_cast<uint32_t>(v));
-    bus.write(ax(k, lo + 4), static_cast<uint32_t>(v >> 32));
-  };
-  bus.write(ax(k, R::axis::STEPS), m.steps);
-  bus.write(ax(k, R::axis::DIR), m.dir ? 1u : 0u);
-  w64(R::axis::V_START_LO, m.v_start);
-  w64(R::axis::V_MAX_LO, m.v_max);
-  w64(R::axis::V_END_LO, m.v_end);
-  w64(R::axis::V_DEC_LO, m.v_dec);
-  w64(R::axis::ACC_LO, m.acc);
-  w64(R::axis::DEC_LO, m.dec);
-  bus.write(ax(k, R::axis::ACC_STEPS), m.acc_steps);
-  bus.write(ax(k, R::axis::DEC_STEP), m.dec_step);
-  bus.write(ax(k, R::axis::DEC_FRAC), m.dec_frac);
-}
-// Stage and push; the reference queue takes it at the push's ack (if the documented rules let
-// it: room in the queue, no E-STOP latched).
-void push(WbTop& bus, WbRef& ref, unsigned k, const AxisMove& m) {
-  write_move(bus, k, m);
-  ref.arm([&ref, k, m] {
-    if (ref.q[k].size() < 2 && !ref.latched) ref.q[k].push_back(m);
-  });
-  bus.write(ax(k, R::axis::CMD), R::axis::CMD_PUSH_MASK);
-}
-void start(WbTop& bus, WbRef& ref, uint32_t mask) {
-  ref.arm([&ref, mask] {
-    if (!ref.latched) ref.start_next = mask;
-  });
-  bus.write(R::START, mask);
-}
+void start(WbTop& bus, uint32_t mask) { bus.write(R::START, mask); }
 uint32_t free_slots(WbTop& bus, unsigned k) {
   return (bus.read(ax(k, R::axis::STATUS)) & R::axis::STATUS_FREE_MASK) >> R::axis::STATUS_FREE_SHIFT;
 }
@@ -829,18 +709,18 @@ bool run_until_idle(WbTop& bus, WbRef& ref, uint64_t limit = 400000) {
 TEST(Faults, EstopDuringChainedMoves) {
   // Where the first chain boundary of axis 0 falls (edge of the second start), from a run
   // without E-STOP.
-  auto load = [](WbTop& bus, WbRef& ref) {
+  auto load = [](WbTop& bus) {
     for (unsigned k = 0; k < kNumAxes; ++k) {
-      push(bus, ref, k, trapezoid(40 + 4 * k, k % 2 == 0));
-      push(bus, ref, k, cruise(30, 1ull << 61, k % 2 == 1));
+      push(bus, k, trapezoid(40 + 4 * k, k % 2 == 0));
+      push(bus, k, cruise(30, 1ull << 61, k % 2 == 1));
     }
   };
   uint64_t chain_edge = 0, start_edge = 0;
   {
     WbTop bus(21);
     WbRef ref(bus);
-    load(bus, ref);
-    start(bus, ref, kAllAxes);
+    load(bus);
+    start(bus, kAllAxes);
     ASSERT_TRUE(run_until_idle(bus, ref));
     ASSERT_EQ(ref.starts[0].size(), 2u);
     start_edge = ref.starts[0][0];
@@ -856,50 +736,57 @@ TEST(Faults, EstopDuringChainedMoves) {
     WbTop bus(22);
     bus.set_timing(1, 1);
     WbRef ref(bus);
-    load(bus, ref);
-    start(bus, ref, kAllAxes);
+    load(bus);
+    start(bus, kAllAxes);
     // The reference's edge count equals the edge count of the first run at the same point (the
     // bus traffic before the start differs only in its random idle cycles): find the start.
     ASSERT_FALSE(ref.starts[0].empty()) << name;
     const uint64_t target = ref.starts[0][0] + (chain_edge - start_edge) + off;
     while (ref.edges + 1 < target) bus.tick();
-    bus.set_estop(true);
-    ref.estop_edge = static_cast<int64_t>(ref.edges);  // the next edge samples the pin high
+    bus.set_estop(true);  // the next edge, E, samples the pin high
     std::array<uint64_t, kNumAxes> rises_at_abort{};
-    for (int i = 0; i < 4; ++i) bus.tick();
+    for (int i = 0; i < 4; ++i) {  // edges E .. E+3: the core is aborted at E+3, not before
+      bus.tick();
+      EXPECT_EQ(ref.model.core_inputs().abort_mask, i == 3 ? kAllAxes : 0u) << name << ", edge E+" << i;
+    }
     rises_at_abort = ref.rises;
-    for (int i = 0; i < 400; ++i) bus.tick();
+    for (int i = 0; i < 400; ++i) {  // and at every edge while latched
+      bus.tick();
+      if (ref.model.core_inputs().abort_mask != kAllAxes) {
+        ADD_FAILURE() << name << ": latched E-STOP does not abort every axis at edge " << ref.edges - 1;
+        break;
+      }
+    }
     EXPECT_EQ(ref.mismatches, 0u) << name << "\n" << ref.report_text();
     EXPECT_EQ(ref.rises, rises_at_abort) << name << ": STEP rose after the core's abort edge";
     EXPECT_EQ(bus.read(R::GSTATUS), R::GSTATUS_ESTOP_MASK | R::GSTATUS_ESTOP_PIN_MASK) << name;
     for (unsigned k = 0; k < kNumAxes; ++k) {
       EXPECT_EQ(bus.read(ax(k, R::axis::STATUS)), R::axis::STATUS_RESET) << name << " axis " << k;
       EXPECT_NE(bus.read(ax(k, R::axis::ERR)) & R::axis::ERR_ESTOP_MASK, 0u) << name << " axis " << k;
-      EXPECT_EQ(bus_pos(bus, k), ref.model.out(k).pos) << name << " axis " << k;
+      EXPECT_EQ(bus_pos(bus, k), ref.out(k).pos) << name << " axis " << k;
     }
     // Pushes and starts are dropped while latched.
-    push(bus, ref, 1, cruise(10, 1ull << 61));
-    start(bus, ref, 2u);
+    push(bus, 1, cruise(10, 1ull << 61));
+    start(bus, 2u);
     EXPECT_EQ(free_slots(bus, 1), 2u) << name;
     bus.set_estop(false);
     for (int i = 0; i < 6; ++i) bus.tick();
-    ref.arm([&ref] { ref.latched = false; ref.estop_edge = -1; });
     bus.write(R::GSTATUS, R::GSTATUS_ESTOP_MASK);
     EXPECT_EQ(bus.read(R::GSTATUS), 0u) << name;
     for (unsigned k = 0; k < kNumAxes; ++k) bus.write(ax(k, R::axis::ERR), 0xFFFFFFFFu);
     // A new chained sequence, all axes, reversed directions.
     std::array<int64_t, kNumAxes> p0{};
-    for (unsigned k = 0; k < kNumAxes; ++k) p0[k] = ref.model.out(k).pos;
+    for (unsigned k = 0; k < kNumAxes; ++k) p0[k] = ref.out(k).pos;
     for (unsigned k = 0; k < kNumAxes; ++k) {
-      push(bus, ref, k, cruise(12, 1ull << 61, k % 2 == 1));
-      push(bus, ref, k, trapezoid(40, k % 2 == 0));
+      push(bus, k, cruise(12, 1ull << 61, k % 2 == 1));
+      push(bus, k, trapezoid(40, k % 2 == 0));
     }
-    start(bus, ref, kAllAxes);
+    start(bus, kAllAxes);
     ASSERT_TRUE(run_until_idle(bus, ref)) << name;
     EXPECT_EQ(ref.mismatches, 0u) << name << "\n" << ref.report_text();
     for (unsigned k = 0; k < kNumAxes; ++k) {
       const int64_t want = p0[k] + (k % 2 == 1 ? 12 : -12) + (k % 2 == 0 ? 40 : -40);
-      EXPECT_EQ(ref.model.out(k).pos, want) << name << " axis " << k;
+      EXPECT_EQ(ref.out(k).pos, want) << name << " axis " << k;
       EXPECT_EQ(bus_pos(bus, k), want) << name << " axis " << k;
       EXPECT_EQ(bus.read(ax(k, R::axis::ERR)), 0u) << name << " axis " << k;
     }
@@ -916,19 +803,19 @@ TEST(Faults, QueueOverrunDuringMotion) {
   std::array<int64_t, kNumAxes> expect{};
   for (unsigned k = 0; k < kNumAxes; ++k) {
     if (k == 4) continue;
-    push(bus, ref, k, trapezoid(60 + k, k % 2 == 0));
+    push(bus, k, trapezoid(60 + k, k % 2 == 0));
     expect[k] = (k % 2 == 0 ? 1 : -1) * int64_t(60 + k);
   }
-  push(bus, ref, 4, a);
-  start(bus, ref, kAllAxes);
+  push(bus, 4, a);
+  start(bus, kAllAxes);
   for (int i = 0; i < 50; ++i) bus.tick();
-  push(bus, ref, 4, b);
-  push(bus, ref, 4, c);
+  push(bus, 4, b);
+  push(bus, 4, c);
   EXPECT_EQ(free_slots(bus, 4), 0u);
   EXPECT_EQ(bus.read(ax(4, R::axis::ERR)), 0u);
-  push(bus, ref, 4, cruise(7, 1ull << 62));  // full: dropped
+  push(bus, 4, cruise(7, 1ull << 62));  // full: dropped
   EXPECT_EQ(bus.read(ax(4, R::axis::ERR)), R::axis::ERR_OVERRUN_MASK);
-  push(bus, ref, 4, cruise(7, 1ull << 62));  // again
+  push(bus, 4, cruise(7, 1ull << 62));  // again
   EXPECT_EQ(free_slots(bus, 4), 0u);
   for (unsigned k = 0; k < kNumAxes; ++k) {
     if (k != 4) EXPECT_EQ(bus.read(ax(k, R::axis::ERR)), 0u) << "axis " << k;
@@ -938,7 +825,7 @@ TEST(Faults, QueueOverrunDuringMotion) {
   expect[4] = signed_steps(a) + signed_steps(b) + signed_steps(c);
   for (unsigned k = 0; k < kNumAxes; ++k) {
     EXPECT_EQ(bus_pos(bus, k), expect[k]) << "axis " << k;
-    EXPECT_EQ(ref.model.out(k).pos, expect[k]) << "axis " << k;
+    EXPECT_EQ(ref.out(k).pos, expect[k]) << "axis " << k;
   }
   EXPECT_EQ(ref.starts[4].size(), 3u);
   EXPECT_EQ(bus.protocol_errors(), 0u);
@@ -960,10 +847,10 @@ TEST(Faults, BusWritesToEveryRegisterDuringMotion) {
   std::array<int64_t, kNumAxes> expect{};
   for (unsigned k = 0; k < kNumAxes; ++k) {
     const AxisMove m = k == 2 ? main : cruise(1200 + 100 * k, (1ull << 59) + (uint64_t(k) << 50), k % 2 == 0);
-    push(bus, ref, k, m);
+    push(bus, k, m);
     expect[k] = signed_steps(m);
   }
-  start(bus, ref, kAllAxes);
+  start(bus, kAllAxes);
   std::vector<uint32_t> pulse_regs = {R::axis::STEP_HIGH, R::axis::STEP_LOW, R::axis::DIR_SETUP, R::axis::DIR_HOLD,
                                       R::axis::POLARITY};
   unsigned writes = 0;
@@ -1011,7 +898,7 @@ TEST(Faults, BusWritesToEveryRegisterDuringMotion) {
   for (uint32_t adr : {0x080u, 0x0FCu, ax(2, 0x7C), 0xFFCu}) bus.write(adr, 0xFFFFFFFFu);
   writes += 4;
   ref.context.clear();
-  ASSERT_TRUE(ref.model.out(2).busy) << "the writes outlasted the move; lengthen it";
+  ASSERT_TRUE(ref.out(2).busy) << "the writes outlasted the move; lengthen it";
   ASSERT_TRUE(run_until_idle(bus, ref));
   EXPECT_GT(writes, 400u);
   EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();

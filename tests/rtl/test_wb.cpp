@@ -2,172 +2,40 @@
 // Wishbone register interface (rtl/hexstep_wb.v inside rtl/hexstep_top.v): the bus, the
 // register map (offsets and reset values generated from rdl/hexstep.rdl, so a hand-written
 // decode that disagrees with the map fails here), the move queue, START/ABORT/E-stop and IRQ.
-// Motion is checked against the golden model hexstep::CoreModel, fed the same moves at the
-// edges the documented queue semantics give (class Ref), STEP/DIR compared after every edge.
+// Motion is checked against the golden register-block model hexstep::WbModel (tests/common/
+// wb_ref.hpp: ack, read data, IRQ, STEP/DIR compared after every edge), and the queue timing
+// (same-cycle starts, gap-free chaining) against the documented rules below.
 #include <gtest/gtest.h>
 
 #include <array>
-#include <deque>
-#include <functional>
 #include <vector>
 
 #include "hexstep/core.hpp"
 #include "hexstep_regs.hpp"
+#include "vectors.hpp"
 #include "wb_bfm.hpp"
+#include "wb_ref.hpp"
 
 using namespace hexstep;
+using namespace hexstep::test;
 namespace R = hexstep::regs;
 
 namespace {
 
-constexpr uint32_t ax(unsigned k, uint32_t reg) { return R::AXIS_BASE + k * R::AXIS_STRIDE + reg; }
-constexpr uint32_t kAllAxes = (1u << kNumAxes) - 1u;
-
-// Reference of the bus block's queue semantics around the golden core model. edge() runs after
-// every RTL edge: it ticks the model with the inputs the RTL core saw at that edge and compares
-// the pins. Commands written over the bus take effect when their ack is seen (the slave acts at
-// the edge that raises ack): arm() registers what to do then.
-struct Ref {
-  explicit Ref(WbTop& b) : bus(b) { b.on_edge = [this] { edge(); }; }
-  WbTop& bus;
-  CoreModel model;
-  CoreInputs in;
-  std::array<std::deque<AxisMove>, kNumAxes> q;
-  uint32_t run = 0, start_next = 0, abort_next = 0;
-  std::function<void()> on_ack;
-  bool skip_compare = false;
-  uint64_t mismatches = 0, edges = 0;
-  std::array<std::vector<uint64_t>, kNumAxes> starts;  // edge index of every core start
-  std::array<std::vector<uint64_t>, kNumAxes> dones;   // edge index after which done was high
-  std::array<uint64_t, kNumAxes> rises{};
-
-  // skip_at_ack: do not compare the pins at the ack edge (a polarity write shows on the RTL pins
-  // at once, while the model takes it with the inputs of the next edge).
-  void arm(std::function<void()> f, bool skip_at_ack = false) {
-    on_ack = std::move(f);
-    skip_at_ack_ = skip_at_ack;
-  }
-  bool skip_at_ack_ = false;
-  void edge() {
-    if (bus.ack() && on_ack && skip_at_ack_) skip_compare = true;
-    uint32_t start = 0;
-    const uint32_t abort = abort_next;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      const uint32_t b = 1u << k;
-      const bool chain = (run & b) && model.out(k).done;
-      if (abort & b) {
-        q[k].clear();
-        run &= ~b;
-        continue;
-      }
-      if (!q[k].empty() && (((start_next & b) && !(run & b)) || chain)) {
-        in.move[k] = q[k].front();
-        q[k].pop_front();
-        start |= b;
-        run |= b;
-        starts[k].push_back(edges);
-      } else if (chain) {
-        run &= ~b;
-      }
-    }
-    in.start_mask = start;
-    in.abort_mask = abort;
-    std::array<bool, kNumAxes> prev{};
-    for (unsigned k = 0; k < kNumAxes; ++k) prev[k] = model.axis(k).step_level();
-    model.tick(in);
-    start_next = abort_next = 0;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      if (model.axis(k).step_level() && !prev[k]) ++rises[k];
-      if (model.out(k).done) dones[k].push_back(edges);
-      if (skip_compare) continue;
-      const AxisOutputs o = model.out(k);
-      if (o.step != bus.step(k) || o.dir != bus.dir(k)) {
-        if (mismatches < 10)
-          ADD_FAILURE() << "edge " << edges << " axis " << k << ": model step/dir " << o.step << o.dir
-                        << ", rtl " << bus.step(k) << bus.dir(k);
-        ++mismatches;
-      }
-    }
-    skip_compare = false;
-    ++edges;
-    if (bus.ack() && on_ack) {
-      auto f = std::move(on_ack);
-      on_ack = nullptr;
-      f();
-    }
-  }
-  bool idle() const {
-    for (unsigned k = 0; k < kNumAxes; ++k)
-      if (model.out(k).busy || ((run >> k) & 1u)) return false;
-    return true;
-  }
-};
-
-void write_move(WbTop& bus, unsigned k, const AxisMove& m) {
-  auto w64 = [&](uint32_t lo, uint64_t v) {
-    bus.write(ax(k, lo), static_cast<uint32_t>(v));
-    bus.write(ax(k, lo + 4), static_cast<uint32_t>(v >> 32));
-  };
-  bus.write(ax(k, R::axis::STEPS), m.steps);
-  bus.write(ax(k, R::axis::DIR), m.dir ? 1u : 0u);
-  w64(R::axis::V_START_LO, m.v_start);
-  w64(R::axis::V_MAX_LO, m.v_max);
-  w64(R::axis::V_END_LO, m.v_end);
-  w64(R::axis::V_DEC_LO, m.v_dec);
-  w64(R::axis::ACC_LO, m.acc);
-  w64(R::axis::DEC_LO, m.dec);
-  bus.write(ax(k, R::axis::ACC_STEPS), m.acc_steps);
-  bus.write(ax(k, R::axis::DEC_STEP), m.dec_step);
-  bus.write(ax(k, R::axis::DEC_FRAC), m.dec_frac);
-}
-// Stage and push a move; the reference queue gets it at the push's ack.
-void push(WbTop& bus, Ref* ref, unsigned k, const AxisMove& m) {
-  write_move(bus, k, m);
-  if (ref) ref->arm([ref, k, m] { if (ref->q[k].size() < 2) ref->q[k].push_back(m); });
-  bus.write(ax(k, R::axis::CMD), R::axis::CMD_PUSH_MASK);
-}
-void start(WbTop& bus, Ref& ref, uint32_t mask) {
-  ref.arm([&ref, mask] { ref.start_next = mask; });
-  bus.write(R::START, mask);
-}
-void run_until_idle(WbTop& bus, Ref& ref, uint64_t limit = 200000) {
+void start(WbTop& bus, uint32_t mask) { bus.write(R::START, mask); }
+void run_until_idle(WbTop& bus, WbRef& ref, uint64_t limit = 200000) {
   for (uint64_t i = 0; i < limit && !ref.idle(); ++i) bus.tick();
   for (int i = 0; i < 20; ++i) bus.tick();
   ASSERT_TRUE(ref.idle());
 }
 
-// Trapezoid: accelerate, cruise at 1/8 step per tick, decelerate (validated below).
-AxisMove trapezoid(uint32_t steps, bool dir = true) {
-  AxisMove m;
-  m.steps = steps;
-  m.dir = dir;
-  m.v_start = 1ull << 58;
-  m.v_max = 1ull << 61;
-  m.acc = 1ull << 43;  // the largest power of two in the 44-bit ACC/DEC registers
-  m.dec = 1ull << 43;
-  m.v_end = 1ull << 58;
-  m.v_dec = (1ull << 61) - (1ull << 54);
-  m.acc_steps = steps / 4;
-  m.dec_step = steps - steps / 4;
-  m.dec_frac = 0x80000000u;
-  return m;
-}
-AxisMove cruise(uint32_t steps, uint64_t speed, bool dir = true) {
-  AxisMove m;
-  m.steps = steps;
-  m.dir = dir;
-  m.v_start = m.v_max = m.v_end = m.v_dec = speed;
-  m.dec_step = steps;
-  return m;
-}
-
 TEST(Wb, MovesUsedHereAreValid) {
-  EXPECT_EQ(validate_move(trapezoid(40)), 0u);
+  EXPECT_EQ(validate_move(bus_trapezoid(40)), 0u);
   EXPECT_EQ(validate_move(cruise(10, 1ull << 62)), 0u);
   // Every value fits its register (the bus keeps only ACC_W bits of ACC/DEC).
   const Widths w;
-  EXPECT_EQ(trapezoid(40).acc & ~w.acc_mask(), 0u);
-  EXPECT_EQ(trapezoid(40).dec & ~w.acc_mask(), 0u);
+  EXPECT_EQ(bus_trapezoid(40).acc & ~w.acc_mask(), 0u);
+  EXPECT_EQ(bus_trapezoid(40).dec & ~w.acc_mask(), 0u);
 }
 
 TEST(Wb, ResetValuesOfEveryRegister) {
@@ -319,7 +187,7 @@ TEST(Wb, QueuePushAndOverrun) {
   const uint32_t st = ax(2, R::axis::STATUS);
   auto free_slots = [&] { return (bus.read(st) & R::axis::STATUS_FREE_MASK) >> R::axis::STATUS_FREE_SHIFT; };
   EXPECT_EQ(free_slots(), 2u);
-  write_move(bus, 2, trapezoid(40));
+  write_move(bus, 2, bus_trapezoid(40));
   bus.write(ax(2, R::axis::CMD), 1);
   EXPECT_EQ(free_slots(), 1u);
   bus.write(ax(2, R::axis::CMD), 1);
@@ -348,20 +216,22 @@ TEST(Wb, QueuePushAndOverrun) {
 TEST(Wb, StartMaskStartsAxesOnTheSameCycle) {
   WbTop bus(6);
   bus.set_timing(3, 2);
-  Ref ref(bus);
+  WbRef ref(bus);
   const unsigned axes[] = {0, 2, 5};
-  for (unsigned k : axes) push(bus, &ref, k, trapezoid(40, k != 2));
-  push(bus, &ref, 3, trapezoid(30));  // queued but not started
-  start(bus, ref, (1u << 0) | (1u << 2) | (1u << 5));
+  for (unsigned k : axes) push(bus, k, bus_trapezoid(40, k != 2));
+  push(bus, 3, bus_trapezoid(30));  // queued but not started
+  start(bus, (1u << 0) | (1u << 2) | (1u << 5));
+  const uint64_t start_ack = ref.acks.back();
   run_until_idle(bus, ref, 5000);
   for (unsigned k : axes) {
     ASSERT_EQ(ref.starts[k].size(), 1u);
-    EXPECT_EQ(ref.starts[k][0], ref.starts[0][0]) << "axis " << k;
+    // START takes effect at the edge after its write's ack, on all axes of the mask at once.
+    EXPECT_EQ(ref.starts[k][0], start_ack + 1) << "axis " << k;
     EXPECT_EQ(ref.rises[k], 40u);
   }
   EXPECT_EQ(ref.starts[3].size(), 0u);
-  EXPECT_EQ(ref.mismatches, 0u);
-  EXPECT_EQ(ref.q[3].size(), 1u);  // the RTL still holds it too (STATUS.free below)
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
+  EXPECT_EQ(ref.model.queued(3), 1u);  // the RTL still holds it too (STATUS.free below)
   EXPECT_EQ(static_cast<int32_t>(bus.read(ax(0, R::axis::POS_LO))), 40);
   EXPECT_EQ(static_cast<int32_t>(bus.read(ax(2, R::axis::POS_LO))), -40);
   EXPECT_EQ(bus.read(ax(2, R::axis::POS_HI)), 0xFFFFFFFFu);  // latched sign extension
@@ -372,21 +242,23 @@ TEST(Wb, StartMaskStartsAxesOnTheSameCycle) {
 TEST(Wb, ChainedMovesRunWithoutGap) {
   WbTop bus(7);
   bus.set_timing(2, 2);
-  Ref ref(bus);
-  push(bus, &ref, 1, trapezoid(40));
-  push(bus, &ref, 1, cruise(12, 1ull << 62, false));
-  start(bus, ref, 1u << 1);
+  WbRef ref(bus);
+  push(bus, 1, bus_trapezoid(40));
+  push(bus, 1, cruise(12, 1ull << 62, false));
+  start(bus, 1u << 1);
+  const uint64_t start_ack = ref.acks.back();
   // While the first runs, a third move fills the freed slot and chains too.
   for (int i = 0; i < 30; ++i) bus.tick();
-  push(bus, &ref, 1, trapezoid(20));
+  push(bus, 1, bus_trapezoid(20));
   run_until_idle(bus, ref, 5000);
   ASSERT_EQ(ref.starts[1].size(), 3u);
+  EXPECT_EQ(ref.starts[1][0], start_ack + 1);
   ASSERT_GE(ref.dones[1].size(), 2u);
   // The core's start for move n+1 is at the edge right after the cycle move n's done was high.
   EXPECT_EQ(ref.starts[1][1], ref.dones[1][0] + 1);
   EXPECT_EQ(ref.starts[1][2], ref.dones[1][1] + 1);
   EXPECT_EQ(ref.rises[1], 72u);
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
   EXPECT_EQ(static_cast<int32_t>(bus.read(ax(1, R::axis::POS_LO))), 40 - 12 + 20);
   EXPECT_EQ(bus.read(ax(1, R::axis::STATUS)) & R::axis::STATUS_RUN_MASK, 0u);  // ran out of moves
   EXPECT_EQ(bus.read(ax(1, R::axis::ERR)), 0u);
@@ -395,38 +267,42 @@ TEST(Wb, ChainedMovesRunWithoutGap) {
 TEST(Wb, StagingWritesNeverChangeTheRunningMove) {
   WbTop bus(8);
   bus.set_timing(1, 1);
-  Ref ref(bus);
-  push(bus, &ref, 4, trapezoid(40));
-  start(bus, ref, 1u << 4);
+  WbRef ref(bus);
+  push(bus, 4, bus_trapezoid(40));
+  start(bus, 1u << 4);
   // Rewrite every staging word with other values while the move runs (no push).
   write_move(bus, 4, cruise(3, 1ull << 63, false));
   run_until_idle(bus, ref, 5000);
   EXPECT_EQ(ref.rises[4], 40u);
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
   EXPECT_EQ(static_cast<int32_t>(bus.read(ax(4, R::axis::POS_LO))), 40);
 }
 
 TEST(Wb, AbortStopsAndFlushes) {
   WbTop bus(9);
   bus.set_timing(1, 0);
-  Ref ref(bus);
-  push(bus, &ref, 0, cruise(1000, 1ull << 60));
-  push(bus, &ref, 0, cruise(1000, 1ull << 60));
-  start(bus, ref, 1u);
+  WbRef ref(bus);
+  push(bus, 0, cruise(1000, 1ull << 60));
+  push(bus, 0, cruise(1000, 1ull << 60));
+  start(bus, 1u);
   for (int i = 0; i < 200; ++i) bus.tick();
   EXPECT_NE(bus.read(ax(0, R::axis::STATUS)) & R::axis::STATUS_BUSY_MASK, 0u);
-  ref.arm([&ref] { ref.abort_next = 1u; });
   bus.write(R::ABORT, 1u);
+  // The core is aborted at the edge after the write's ack: the last edge of write(), which
+  // holds the request through the ack cycle.
+  ASSERT_EQ(ref.acks.back() + 2, ref.edges);
+  EXPECT_EQ(ref.model.core_inputs().abort_mask, 1u);
   for (int i = 0; i < 100; ++i) bus.tick();
   EXPECT_TRUE(ref.idle());
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.model.queued(0), 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
   const uint32_t s = bus.read(ax(0, R::axis::STATUS));
   EXPECT_EQ(s & (R::axis::STATUS_BUSY_MASK | R::axis::STATUS_RUN_MASK), 0u);
   EXPECT_EQ((s & R::axis::STATUS_FREE_MASK) >> R::axis::STATUS_FREE_SHIFT, 2u);
   EXPECT_EQ(static_cast<int64_t>(static_cast<int32_t>(bus.read(ax(0, R::axis::POS_LO)))),
-            ref.model.out(0).pos);
-  EXPECT_GT(ref.model.out(0).pos, 0);
-  EXPECT_LT(ref.model.out(0).pos, 1000);
+            ref.out(0).pos);
+  EXPECT_GT(ref.out(0).pos, 0);
+  EXPECT_LT(ref.out(0).pos, 1000);
 }
 
 TEST(Wb, EstopLatchesAbortsAllAxesAndClears) {
@@ -515,7 +391,7 @@ TEST(Wb, InterruptsSetAndClear) {
 TEST(Wb, PulseTimingAndPolarityReachTheCore) {
   WbTop bus(12);
   bus.set_timing(1, 1);
-  Ref ref(bus);
+  WbRef ref(bus);
   PulseConfig pc;
   pc.step_high = 3;
   pc.step_low = 5;
@@ -527,15 +403,22 @@ TEST(Wb, PulseTimingAndPolarityReachTheCore) {
   bus.write(ax(5, R::axis::STEP_LOW), pc.step_low);
   bus.write(ax(5, R::axis::DIR_SETUP), pc.dir_setup);
   bus.write(ax(5, R::axis::DIR_HOLD), pc.dir_hold);
-  ref.arm([&ref, pc] { ref.in.pulse[5] = pc; }, true);
   bus.write(ax(5, R::axis::POLARITY), R::axis::POLARITY_STEP_INV_MASK | R::axis::POLARITY_DIR_INV_MASK);
-  // The model sees the new timing from the edge after the write; polarity shows at once on
-  // the RTL pins, so the ack edge is not compared.
-  push(bus, &ref, 5, trapezoid(40, false));
-  start(bus, ref, 1u << 5);
+  // WbModel applies polarity at once, as the RTL pins do: every edge is compared, the write's
+  // ack edge included.
+  push(bus, 5, bus_trapezoid(40, false));
+  start(bus, 1u << 5);
   run_until_idle(bus, ref, 5000);
+  // The core ran the move with the written timing and polarity.
+  const PulseConfig& got = ref.model.core_inputs().pulse[5];
+  EXPECT_EQ(got.step_high, pc.step_high);
+  EXPECT_EQ(got.step_low, pc.step_low);
+  EXPECT_EQ(got.dir_setup, pc.dir_setup);
+  EXPECT_EQ(got.dir_hold, pc.dir_hold);
+  EXPECT_EQ(got.step_invert, pc.step_invert);
+  EXPECT_EQ(got.dir_invert, pc.dir_invert);
   EXPECT_EQ(ref.rises[5], 40u);
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
 }
 
 }  // namespace

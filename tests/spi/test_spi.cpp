@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // SPI-to-Wishbone bridge (rtl/hexstep_spi_wb.v) in front of the real hexstep_top, driven by the
 // SPI master model sim/spi_master.*: register reads and writes (readback, byte enables, the
-// reply CRC), a move started over SPI compared with the golden model at every clock edge, and
+// reply CRC), a move started over SPI compared with the golden register-block model WbModel
+// at every clock edge (tests/common/wb_ref.hpp), and
 // malformed frames (truncated, overlong, bad CRC, bad command, address out of range, CS_N
 // without clock), which must not start any Wishbone cycle and must change no register.
 #include <gtest/gtest.h>
 
 #include <array>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <random>
@@ -18,17 +18,20 @@
 #include "hexstep_regs.hpp"
 #include "spi_master.hpp"
 #include "trace.hpp"
+#include "vectors.hpp"
 #include "verilated.h"
 #include "verilated_fst_c.h"
+#include "wb_ref.hpp"
 
 using namespace hexstep;
+using namespace hexstep::test;
 namespace R = hexstep::regs;
 
 namespace {
 
-constexpr uint32_t ax(unsigned k, uint32_t reg) { return R::AXIS_BASE + k * R::AXIS_STRIDE + reg; }
-
-// The Verilated spi_tb_top behind the SpiPins interface; counts Wishbone cycles and acks.
+// The Verilated spi_tb_top behind the SpiPins interface; counts Wishbone cycles and acks, and
+// hands the Wishbone pins hexstep_top samples at each edge to pre_edge (for WbModel; the
+// monitor shows cyc & stb as one signal, which is all hexstep_top decodes).
 class SpiTop : public SpiPins {
  public:
   SpiTop() : top_(new Vspi_tb_top(&ctx_, "spi_tb_top")) {
@@ -60,6 +63,16 @@ class SpiTop : public SpiPins {
   }
   void tick() override {
     top_->eval();
+    if (pre_edge) {
+      WbPins p;
+      p.cyc = p.stb = top_->mon_cyc_o;
+      p.we = top_->mon_we_o;
+      p.adr = top_->mon_adr_o;
+      p.dat = top_->mon_dat_o;
+      p.sel = top_->mon_sel_o;
+      p.estop = top_->estop_i;
+      pre_edge(p);
+    }
     if (trace_) trace_->dump(cycles_ * 10);
     top_->clk_i = 1;
     top_->eval();
@@ -78,6 +91,7 @@ class SpiTop : public SpiPins {
   bool step(unsigned k) const { return (top_->step_o >> k) & 1u; }
   bool dir(unsigned k) const { return (top_->dir_o >> k) & 1u; }
   bool ack() const { return top_->mon_ack_o; }
+  bool irq() const { return top_->irq_o; }
   bool miso_oe() const { return top_->spi_miso_oe_o; }
   uint64_t acks() const { return acks_; }
   uint64_t bus_requests() const { return bus_requests_; }
@@ -85,6 +99,7 @@ class SpiTop : public SpiPins {
   struct Access { bool we; uint32_t adr, dat, sel; };
   Access last_ack() const { return last_ack_; }
   std::function<void()> on_edge;
+  std::function<void(const WbPins&)> pre_edge;
 
  private:
   VerilatedContext ctx_;
@@ -94,98 +109,6 @@ class SpiTop : public SpiPins {
   bool prev_cyc_ = false;
   Access last_ack_{};
 };
-
-// Golden model beside the RTL: moves enter the reference queue at the ack of their CMD.push
-// write and START takes effect at the edge after its write's ack (the semantics of
-// hexstep_wb, documented in docs/ARCHITECTURE.md); STEP/DIR compared after every edge.
-struct Ref {
-  explicit Ref(SpiTop& d) : dut(d) { d.on_edge = [this] { edge(); }; }
-  SpiTop& dut;
-  CoreModel model;
-  CoreInputs in;
-  std::array<std::deque<AxisMove>, kNumAxes> q;
-  uint32_t run = 0, start_next = 0;
-  std::function<void()> on_ack;
-  uint64_t mismatches = 0, edges = 0;
-  std::array<uint64_t, kNumAxes> rises{};
-  void arm(std::function<void()> f) { on_ack = std::move(f); }
-  void edge() {
-    uint32_t start = 0;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      const uint32_t b = 1u << k;
-      const bool chain = (run & b) && model.out(k).done;
-      if (!q[k].empty() && (((start_next & b) && !(run & b)) || chain)) {
-        in.move[k] = q[k].front();
-        q[k].pop_front();
-        start |= b;
-        run |= b;
-      } else if (chain) {
-        run &= ~b;
-      }
-    }
-    in.start_mask = start;
-    in.abort_mask = 0;
-    std::array<bool, kNumAxes> prev{};
-    for (unsigned k = 0; k < kNumAxes; ++k) prev[k] = model.axis(k).step_level();
-    model.tick(in);
-    start_next = 0;
-    for (unsigned k = 0; k < kNumAxes; ++k) {
-      if (model.axis(k).step_level() && !prev[k]) ++rises[k];
-      const AxisOutputs o = model.out(k);
-      if (o.step != dut.step(k) || o.dir != dut.dir(k)) {
-        if (mismatches < 10)
-          ADD_FAILURE() << "edge " << edges << " axis " << k << ": model step/dir " << o.step
-                        << o.dir << ", rtl " << dut.step(k) << dut.dir(k);
-        ++mismatches;
-      }
-    }
-    ++edges;
-    if (dut.ack() && on_ack) {
-      auto f = std::move(on_ack);
-      on_ack = nullptr;
-      f();
-    }
-  }
-  bool idle() const {
-    for (unsigned k = 0; k < kNumAxes; ++k)
-      if (model.out(k).busy || ((run >> k) & 1u)) return false;
-    return true;
-  }
-};
-
-void spi_write_move(SpiMaster& m, unsigned k, const AxisMove& mv) {
-  auto w64 = [&](uint32_t lo, uint64_t v) {
-    m.write(ax(k, lo), static_cast<uint32_t>(v));
-    m.write(ax(k, lo + 4), static_cast<uint32_t>(v >> 32));
-  };
-  m.write(ax(k, R::axis::STEPS), mv.steps);
-  m.write(ax(k, R::axis::DIR), mv.dir ? 1u : 0u);
-  w64(R::axis::V_START_LO, mv.v_start);
-  w64(R::axis::V_MAX_LO, mv.v_max);
-  w64(R::axis::V_END_LO, mv.v_end);
-  w64(R::axis::V_DEC_LO, mv.v_dec);
-  w64(R::axis::ACC_LO, mv.acc);
-  w64(R::axis::DEC_LO, mv.dec);
-  m.write(ax(k, R::axis::ACC_STEPS), mv.acc_steps);
-  m.write(ax(k, R::axis::DEC_STEP), mv.dec_step);
-  m.write(ax(k, R::axis::DEC_FRAC), mv.dec_frac);
-}
-
-AxisMove trapezoid(uint32_t steps, bool dir) {
-  AxisMove m;
-  m.steps = steps;
-  m.dir = dir;
-  m.v_start = 1ull << 58;
-  m.v_max = 1ull << 61;
-  m.acc = 1ull << 55;
-  m.dec = 1ull << 55;
-  m.v_end = 1ull << 58;
-  m.v_dec = (1ull << 61) - (1ull << 54);
-  m.acc_steps = steps / 4;
-  m.dec_step = steps - steps / 4;
-  m.dec_frac = 0x80000000u;
-  return m;
-}
 
 }  // namespace
 
@@ -248,37 +171,41 @@ TEST(Spi, WriteReadbackByteEnablesAndTiming) {
 
 TEST(Spi, MoveOverSpiMatchesGoldenModel) {
   SpiTop dut;
-  Ref ref(dut);
+  WbRef ref(dut);
   SpiMaster m(dut, 3);
   m.set_timing(4, 7);
-  const AxisMove a = trapezoid(60, true), b = trapezoid(36, false);
+  const AxisMove a = bus_trapezoid(60, true), b = bus_trapezoid(36, false);
   ASSERT_EQ(validate_move(a), 0u);
   ASSERT_EQ(validate_move(b), 0u);
-  spi_write_move(m, 1, a);
-  ref.arm([&ref, a] { ref.q[1].push_back(a); });
-  m.write(ax(1, R::axis::CMD), R::axis::CMD_PUSH_MASK);
-  spi_write_move(m, 4, b);
-  ref.arm([&ref, b] { ref.q[4].push_back(b); });
-  m.write(ax(4, R::axis::CMD), R::axis::CMD_PUSH_MASK);
-  ASSERT_EQ(ref.q[1].size(), 1u);
-  ASSERT_EQ(ref.q[4].size(), 1u);
-  ref.arm([&ref] { ref.start_next = 0x12u; });
+  const Widths w;  // the moves fit the registers as they are (the bus keeps ACC_W bits)
+  ASSERT_EQ((a.acc | a.dec | b.acc | b.dec) & ~w.acc_mask(), 0u);
+  push(m, 1, a);
+  ASSERT_EQ(ref.model.queued(1), 1u);
+  push(m, 4, b);
+  ASSERT_EQ(ref.model.queued(4), 1u);
+  const size_t acks_before_start = ref.acks.size();
   m.write(R::START, 0x12u);
   // The write reaches the bus a few cycles after CS_N rises: wait for its ack.
-  for (int i = 0; i < 100 && ref.on_ack; ++i) dut.tick();
-  ASSERT_FALSE(ref.on_ack) << "START write not acked";
+  for (int i = 0; i < 100 && ref.acks.size() == acks_before_start; ++i) dut.tick();
+  ASSERT_EQ(ref.acks.size(), acks_before_start + 1) << "START write not acked";
+  const uint64_t start_ack = ref.acks.back();
   dut.tick();  // the core starts on the edge after the write's
-  ASSERT_EQ(ref.run, 0x12u);
+  ASSERT_EQ(ref.starts[1].size(), 1u);
+  ASSERT_EQ(ref.starts[4].size(), 1u);
+  EXPECT_EQ(ref.starts[1][0], start_ack + 1);
+  EXPECT_EQ(ref.starts[4][0], start_ack + 1);
+  ASSERT_TRUE(ref.model.running(1) && ref.model.running(4));
+  for (unsigned k : {0u, 2u, 3u, 5u}) EXPECT_TRUE(ref.starts[k].empty()) << "axis " << k;
   for (int i = 0; i < 200000 && !ref.idle(); ++i) dut.tick();
   for (int i = 0; i < 20; ++i) dut.tick();
   ASSERT_TRUE(ref.idle());
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
   EXPECT_EQ(ref.rises[1], 60u);
   EXPECT_EQ(ref.rises[4], 36u);
   // The position registers, read over SPI, show the moves (signed, by direction).
   EXPECT_EQ(m.read(ax(1, R::axis::POS_LO)), 60u);
   EXPECT_EQ(m.read(ax(4, R::axis::POS_LO)), static_cast<uint32_t>(-36));
-  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_EQ(ref.mismatches, 0u) << ref.report_text();
 }
 
 TEST(Spi, MalformedFramesHaveNoBusSideEffect) {

@@ -47,11 +47,15 @@ class WbModel {
   // Moves queued for axis k (0..2).
   unsigned queued(unsigned k) const { return cnt_[k]; }
   bool running(unsigned k) const { return run_[k]; }
+  // What the core was given at the last edge (start/abort/stop strobes, queue head, pulse
+  // configuration): lets a test see when the block starts or aborts an axis.
+  const CoreInputs& core_inputs() const { return core_in_; }
 
  private:
   using Words = std::array<uint32_t, kNw>;
   Widths w_;
   CoreModel core_;
+  CoreInputs core_in_;
   bool ack_q_ = false, irq_q_ = false;
   uint32_t dat_q_ = 0;
   bool es1_ = false, es2_ = false, estop_ = false;
