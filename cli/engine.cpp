@@ -2,6 +2,7 @@
 #include "engine.hpp"
 
 #include "common.hpp"
+#include "hexstep/job_io.hpp"
 
 #ifdef HEXSTEP_HAVE_RTL
 #include "rtl_core.hpp"
@@ -35,12 +36,19 @@ void check_engine(Engine e, const std::string& trace_path) {
                    "(configure with -DHEXSTEP_RTL=ON and Verilator installed)");
 }
 
-std::unique_ptr<CoreSim> make_engine(Engine e, const std::string& trace_path) {
+std::unique_ptr<CoreSim> make_engine(Engine e, const std::string& trace_path, const Widths& w) {
   check_engine(e, trace_path);
 #ifdef HEXSTEP_HAVE_RTL
-  if (e == Engine::kRtl) return std::make_unique<RtlCore>(trace_path);
+  if (e == Engine::kRtl) {
+    const Widths rw = RtlCore::rtl_widths();
+    if (!same_widths(w, rw))
+      throw CliError(kExitUsage, "widths: the job is for a core with " + widths_text(w) +
+                                     "; the Verilated RTL of --engine rtl is built with " +
+                                     widths_text(rw) + " (use --engine model)");
+    return std::make_unique<RtlCore>(trace_path);
+  }
 #endif
-  return std::make_unique<CoreModel>(engine_widths(e));
+  return std::make_unique<CoreModel>(w);
 }
 
 }  // namespace hexstep::cli

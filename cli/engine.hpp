@@ -14,15 +14,17 @@ enum class Engine { kModel, kRtl };
 // Whether this binary was built with the Verilated RTL (CMake target hexstep_rtl).
 bool rtl_available();
 
-// Register widths that a job must fit for this engine.
+// Register widths of a job file without a "widths" object (the default widths for both engines).
 Widths engine_widths(Engine e);
 
 // Throws CliError(kExitUsage) if engine e is not built into this binary, or if a trace is asked
 // for where the engine cannot write one.
 void check_engine(Engine e, const std::string& trace_path);
 
-// A fresh simulator (after check_engine). trace_path: FST waveform file (RTL only; empty: none).
-// Throws CliError(kExitUsage) if the engine is not built or the trace is not supported.
-std::unique_ptr<CoreSim> make_engine(Engine e, const std::string& trace_path);
+// A fresh simulator (after check_engine) for a core with widths w. trace_path: FST waveform
+// file (RTL only; empty: none). The model takes any widths; the Verilated RTL has the widths it
+// was built with. Throws CliError(kExitUsage) if the engine is not built, the trace is not
+// supported, or w is not the RTL's (naming both).
+std::unique_ptr<CoreSim> make_engine(Engine e, const std::string& trace_path, const Widths& w);
 
 }  // namespace hexstep::cli

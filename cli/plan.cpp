@@ -62,6 +62,7 @@ struct AxisResult {
 
 struct PlanResult {
   uint64_t clock_hz = kDefaultClockHz;
+  Widths widths{};                  // the core build the registers are for (--widths)
   std::string mode = "single";      // "single", "independent" or "line"
   std::optional<plan::PhasePlan> path;  // line mode: the plan of the path
   std::vector<AxisResult> axes;     // sorted by axis index
@@ -199,6 +200,39 @@ int64_t flag_int(const std::string& flag, const std::string& text, int64_t lo, i
 const int64_t kMaxSteps = static_cast<int64_t>(plan::kMaxSteps);
 const int64_t kPulseMax = static_cast<int64_t>(Widths{}.pulse_mask());
 const std::string kPulseNote = " clock cycles (PULSE_W = 12 bits)";
+
+// --widths: NAME=BITS pairs, separated by commas; names left out keep their default.
+Widths parse_widths_flag(const std::string& text) {
+  Widths w;
+  if (text.empty()) return w;
+  const std::string accepts = "NAME=BITS pairs separated by commas, NAME one of SPEED_W, ACC_W, STEP_W, "
+                              "DFRAC_W, PULSE_W, POS_W, OWE_W, each at most once";
+  std::array<bool, kNumWidths> seen{};
+  size_t pos = 0;
+  while (pos <= text.size()) {
+    const size_t end = std::min(text.find(',', pos), text.size());
+    const std::string item = text.substr(pos, end - pos);
+    const size_t eq = item.find('=');
+    unsigned i = kNumWidths;
+    if (eq != std::string::npos)
+      for (unsigned k = 0; k < kNumWidths; ++k)
+        if (item.compare(0, eq, kWidthNames[k]) == 0 && eq == std::string(kWidthNames[k]).size()) i = k;
+    if (i == kNumWidths || seen[i])
+      throw CliError(kExitUsage, "--widths: must be " + accepts + ", got '" + item + "' in '" + text + "'");
+    seen[i] = true;
+    width_ref(w, i) = static_cast<unsigned>(
+        flag_int(std::string("--widths ") + kWidthNames[i], item.substr(eq + 1), 0, 1000, " bits"));
+    pos = end + 1;
+  }
+  const std::string e = widths_error(w);
+  if (!e.empty()) {
+    const std::string n = e.substr(0, e.find(':'));
+    bool named = false;
+    for (unsigned k = 0; k < kNumWidths; ++k) named |= seen[k] && n == kWidthNames[k];
+    throw CliError(kExitUsage, "--widths " + e + (named ? "" : " (not given: its default)"));
+  }
+  return w;
+}
 
 // ---------------------------------------------------------------------------------------------
 // The command line
@@ -455,18 +489,32 @@ Prepared prepare(const AxisSpec& s) {
 }
 
 // Pulse rate and registers of a decided plan.
-EncodedMove finish_axis(const AxisSpec& s, real k, const plan::PhasePlan& p, uint64_t clock_hz) {
+EncodedMove finish_axis(const AxisSpec& s, real k, const plan::PhasePlan& p, uint64_t clock_hz,
+                        const Widths& w) {
   return guarded(s, unit_note(s, k), [&] {
+    // The pulse flags were read against the default PULSE_W; a narrower build takes less.
+    const uint64_t pmax = w.pulse_mask();
+    const std::pair<const char*, uint32_t> pulse[] = {{"--step-high", s.pulse.step_high},
+                                                      {"--step-low", s.pulse.step_low},
+                                                      {"--dir-setup", s.pulse.dir_setup},
+                                                      {"--dir-hold", s.pulse.dir_hold}};
+    for (const auto& [flag, v] : pulse)
+      if (v > pmax)
+        throw plan::PlanError(std::string(flag) + ": must be an integer in [0, " + std::to_string(pmax) +
+                              "] clock cycles (PULSE_W = " + std::to_string(w.pulse) +
+                              " bits, --widths), got " + std::to_string(v));
     const real f = static_cast<real>(clock_hz);
     plan::check_pulse_rate(p.v_peak, f, s.pulse.step_high, s.pulse.step_low);
-    return plan::encode(p, f);
+    return plan::encode(p, f, w);
   });
 }
 
-PlanResult plan_all(std::vector<AxisSpec> specs, bool line, uint64_t clock_hz, const std::string& mode) {
+PlanResult plan_all(std::vector<AxisSpec> specs, bool line, uint64_t clock_hz, const std::string& mode,
+                    const Widths& w) {
   std::sort(specs.begin(), specs.end(), [](const AxisSpec& a, const AxisSpec& b) { return a.axis < b.axis; });
   PlanResult r;
   r.clock_hz = clock_hz;
+  r.widths = w;
   r.mode = mode;
   std::vector<Prepared> prep;
   for (const AxisSpec& s : specs) prep.push_back(prepare(s));
@@ -493,7 +541,7 @@ PlanResult plan_all(std::vector<AxisSpec> specs, bool line, uint64_t clock_hz, c
       a.spec = specs[i];
       a.steps_per_unit = prep[i].k;
       a.plan = lp.axes[i].plan;
-      a.enc = finish_axis(specs[i], prep[i].k, a.plan, clock_hz);
+      a.enc = finish_axis(specs[i], prep[i].k, a.plan, clock_hz, w);
       r.axes.push_back(std::move(a));
     }
     return r;
@@ -507,7 +555,7 @@ PlanResult plan_all(std::vector<AxisSpec> specs, bool line, uint64_t clock_hz, c
       return s.time ? plan::plan_timed(prep[i].count.steps, *s.time, prep[i].limits, prep[i].count.dir)
                     : plan::plan_min_time(prep[i].count.steps, prep[i].limits, prep[i].count.dir);
     });
-    a.enc = finish_axis(s, prep[i].k, a.plan, clock_hz);
+    a.enc = finish_axis(s, prep[i].k, a.plan, clock_hz, w);
     r.axes.push_back(std::move(a));
   }
   return r;
@@ -567,6 +615,11 @@ std::string format_json(const PlanResult& r) {
   root["format"] = kPlanFormat;
   root["version"] = 1;
   root["clock_hz"] = r.clock_hz;
+  if (!same_widths(r.widths, Widths{})) {
+    ojson wj = ojson::object();
+    for (unsigned i = 0; i < kNumWidths; ++i) wj[kWidthNames[i]] = width_of(r.widths, i);
+    root["widths"] = std::move(wj);
+  }
   root["mode"] = r.mode;
   root["duration_s"] = d(plan_duration(r));
   root["executed_duration_s"] = d(executed_duration(r));
@@ -693,6 +746,11 @@ std::string format_c(const PlanResult& r) {
   o += "#ifndef HEXSTEP_PLAN_H\n#define HEXSTEP_PLAN_H\n\n#include <stdint.h>\n\n";
   o += "#define HEXSTEP_PLAN_CLOCK_HZ UINT64_C(" + std::to_string(r.clock_hz) + ")\n";
   o += "#define HEXSTEP_PLAN_NUM_AXES " + std::to_string(kNumAxes) + "\n";
+  if (!same_widths(r.widths, Widths{})) {
+    o += "/* Registers for a core built with " + widths_text(r.widths) + " (--widths). */\n";
+    for (unsigned i = 0; i < kNumWidths; ++i)
+      o += "#define HEXSTEP_PLAN_" + std::string(kWidthNames[i]) + " " + std::to_string(width_of(r.widths, i)) + "\n";
+  }
   unsigned mask = 0;
   for (const AxisResult& a : r.axes) mask |= 1u << a.spec.axis;
   char buf[64];
@@ -747,6 +805,7 @@ std::string format_c(const PlanResult& r) {
 std::string format_job_plan(const PlanResult& r) {
   Job job;
   job.clock_hz = r.clock_hz;
+  job.widths = r.widths;
   for (const AxisResult& a : r.axes) {
     job.axes[a.spec.axis].pulse = a.spec.pulse;
     job.axes[a.spec.axis].moves.push_back(a.enc.regs);
@@ -811,6 +870,13 @@ CLI::App* add_plan(CLI::App& app, PlanOptions& o) {
   opt("--clock-hz", o.clock_hz, "F",
       "Clock frequency of the core in Hz, an integer in [1, 10000000000]; the registers depend on "
       "it. Default: 100000000 (or the request file's clock_hz)");
+  opt("--widths", o.widths, "LIST",
+      "Register widths of the core build the registers are for, as NAME=BITS pairs separated by "
+      "commas, names SPEED_W, ACC_W, STEP_W, DFRAC_W, PULSE_W, POS_W, OWE_W (the parameters of "
+      "rtl/hexstep_top.v; a board's are in synth/targets.json), e.g. "
+      "SPEED_W=24,ACC_W=12,STEP_W=16,DFRAC_W=8,PULSE_W=8,POS_W=16. Names left out keep their "
+      "default. Default: the default build (SPEED_W 64, ACC_W 44, STEP_W 32, DFRAC_W 32, "
+      "PULSE_W 12, POS_W 32, OWE_W 2)");
   const std::string pulse_range = "0.." + std::to_string(hexstep::Widths{}.pulse_mask());
   opt("--step-high", o.step_high, "C",
       "STEP pulse high time in clock cycles, " + pulse_range + " (0 acts as 1). Default: 1");
@@ -855,6 +921,7 @@ int run_plan(const PlanOptions& o) {
                                      "] Hz, got '" + o.clock_hz + "'");
     clock_hz = static_cast<uint64_t>(f);
   }
+  const Widths widths = parse_widths_flag(o.widths);
   PlanResult result;
   if (given(o, "--job")) {
     for (const char* f : kAxisFlags)
@@ -878,9 +945,9 @@ int run_plan(const PlanOptions& o) {
                                        " (give the clock in one place)");
       clock_hz = *req.clock_hz;
     }
-    result = plan_all(req.axes, req.line, clock_hz, req.line ? "line" : "independent");
+    result = plan_all(req.axes, req.line, clock_hz, req.line ? "line" : "independent", widths);
   } else {
-    result = plan_all({spec_from_flags(o)}, false, clock_hz, "single");
+    result = plan_all({spec_from_flags(o)}, false, clock_hz, "single", widths);
   }
   std::string text;
   if (o.format == "c") text = format_c(result);

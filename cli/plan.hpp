@@ -15,6 +15,7 @@ struct PlanOptions {
   std::string steps_per_rev, steps_per_mm, pitch_mm;
   std::string start_speed, end_speed, max_speed, accel, decel, ratio, time;
   std::string clock_hz;
+  std::string widths;  // "SPEED_W=24,ACC_W=12,...": the core build the registers are for
   std::string axis = "0";
   std::string step_high = "1", step_low = "1", dir_setup = "0", dir_hold = "0";
   std::string job;  // planning request file (JSON), "-" for stdin

@@ -48,6 +48,7 @@ const char* cmd_name(uint8_t c) {
     case HXP_ABORT: return "ABORT";
     case HXP_CLEAR: return "CLEAR";
     case HXP_STATUS: return "STATUS";
+    case HXP_INFO: return "INFO";
     default: return "?";
   }
 }
@@ -291,6 +292,9 @@ void expect_ok(const Reply& r, const std::string& what) {
   if (r.status != HXP_OK) throw CliError(kExitBoard, "board refused " + what + ": " + status_text(r.status));
 }
 
+Status stream_job(Link& link, const Job& job, uint32_t mask, std::array<size_t, kNumAxes>& left,
+                  unsigned depth);
+
 }  // namespace
 
 CLI::App* add_send(CLI::App& app, SendOptions& o) {
@@ -350,9 +354,41 @@ int run_send(const SendOptions& o) {
   Link link(o.port, o.baud, o.timeout_ms, o.retries);
   const Reply hello = link.request(HXP_HELLO, {});
   expect_ok(hello, "HELLO");
-  if (hello.data.size() + 1 != HXP_HELLO_REPLY_LEN || hello.data[0] != HXP_VERSION || hello.data[1] != kNumAxes)
-    throw CliError(kExitBoard, "board: HELLO: unexpected protocol version or axis count");
+  if (hello.data.size() + 1 != HXP_HELLO_REPLY_LEN || hello.data[0] != HXP_VERSION)
+    throw CliError(kExitBoard, "board: HELLO: protocol version " +
+                                   std::to_string(hello.data.empty() ? 0 : hello.data[0]) + ", expected " +
+                                   std::to_string(HXP_VERSION));
+  // A board build may have fewer axes than six (synth/targets.json): the job must fit them.
+  const unsigned board_axes = hello.data[1];
+  if (board_axes < 1 || board_axes > kNumAxes)
+    throw CliError(kExitBoard, "board: HELLO: axis count " + std::to_string(board_axes) + ", expected 1.." +
+                                   std::to_string(kNumAxes));
+  for (unsigned k = board_axes; k < kNumAxes; ++k)
+    if (mask & (1u << k))
+      throw CliError(kExitBoard, "board: the job moves axis " + std::to_string(k) + ", the board has " +
+                                     std::to_string(board_axes) + (board_axes == 1 ? " axis (0)" : " axes (0.." +
+                                     std::to_string(board_axes - 1) + ")") + "; nothing was sent");
   const unsigned depth = hello.data[2];
+  // The widths of the board's core: the job's registers are in its units (2^-SPEED_W step per
+  // cycle, ...), so a job planned for other widths would run at other speeds, not be refused.
+  const Reply info = link.request(HXP_INFO, {});
+  expect_ok(info, "INFO");
+  if (info.data.size() + 1 != HXP_INFO_REPLY_LEN)
+    throw CliError(kExitBoard, "board: INFO: reply of " + std::to_string(info.data.size() + 1) +
+                                   " bytes, expected " + std::to_string(HXP_INFO_REPLY_LEN));
+  Widths board_w = job.widths;  // POS_W and OWE_W are not reported (not probeable over the bus)
+  board_w.speed_frac = info.data[0];
+  board_w.acc = info.data[1];
+  board_w.steps = info.data[2];
+  board_w.dec_frac = info.data[3];
+  board_w.pulse = info.data[4];
+  if (!same_widths(board_w, job.widths))
+    throw CliError(kExitBoard, name + ": planned for a core with " + widths_text(job.widths) +
+                                   ", the board's core has SPEED_W " + std::to_string(board_w.speed_frac) +
+                                   ", ACC_W " + std::to_string(board_w.acc) + ", STEP_W " +
+                                   std::to_string(board_w.steps) + ", DFRAC_W " + std::to_string(board_w.dec_frac) +
+                                   ", PULSE_W " + std::to_string(board_w.pulse) +
+                                   " (plan it with hexstep plan --widths); nothing was sent");
 
   Status st = get_status(link);
   if (st.gflags & HXP_G_ESTOP) {
@@ -363,7 +399,38 @@ int run_send(const SendOptions& o) {
     throw CliError(kExitBoard, "board: axes busy (mask 0x" + std::to_string(st.active | st.busy) + ") before the job");
   // CLEAR: error flags of an earlier job (and, with --clear-estop, the latch).
   expect_ok(link.request(HXP_CLEAR, {}), "CLEAR (the e-stop input is still active?)");
+  // ABORT the job's axes while they are idle: drops moves a refused earlier run left in the
+  // board's FIFOs, so that START runs this job's moves only.
+  expect_ok(link.request(HXP_ABORT, {static_cast<uint8_t>(mask)}), "ABORT (flush of the job's axes)");
 
+  // From here on the board holds state of this job: a refusal or fault ends it with a
+  // controlled STOP of the job's axes (flushes their FIFOs and queues, decelerates a running
+  // axis to rest), so that nothing of it runs on after `send` has exited. A link error does
+  // not try: the link is what failed.
+  try {
+    st = stream_job(link, job, mask, left, depth);
+  } catch (const CliError& e) {
+    if (e.code() == kExitBoard) {
+      try {
+        (void)link.request(HXP_STOP, {static_cast<uint8_t>(mask)});
+      } catch (const CliError&) {
+      }
+    }
+    throw;
+  }
+  std::string out = "axis,position\n";
+  for (unsigned k = 0; k < kNumAxes; ++k)
+    if (mask & (1u << k)) out += std::to_string(k) + "," + std::to_string(st.axes[k].position) + "\n";
+  write_stdout(out);
+  return kExitOk;
+}
+
+namespace {
+
+// PULSE, MOVE, START, then STATUS and further MOVEs until every axis of the job is at rest.
+Status stream_job(Link& link, const Job& job, uint32_t mask, std::array<size_t, kNumAxes>& left,
+                  unsigned depth) {
+  Status st;
   for (unsigned k = 0; k < kNumAxes; ++k) {
     if (!(mask & (1u << k))) continue;
     const PulseConfig& pc = job.axes[k].pulse;
@@ -420,11 +487,9 @@ int run_send(const SendOptions& o) {
     }
     if (st.active == 0 && st.busy == 0) break;
   }
-  std::string out = "axis,position\n";
-  for (unsigned k = 0; k < kNumAxes; ++k)
-    if (mask & (1u << k)) out += std::to_string(k) + "," + std::to_string(st.axes[k].position) + "\n";
-  write_stdout(out);
-  return kExitOk;
+  return st;
 }
+
+}  // namespace
 
 }  // namespace hexstep::cli

@@ -125,7 +125,12 @@ int run_simulate(const SimulateOptions& o) {
   } catch (const JobError& e) {
     throw CliError(kExitUsage, name + ": " + e.what());
   }
-  std::unique_ptr<CoreSim> core = make_engine(engine, o.trace);
+  std::unique_ptr<CoreSim> core;
+  try {
+    core = make_engine(engine, o.trace, job.widths);
+  } catch (const CliError& e) {
+    throw CliError(e.code(), name + ": " + e.what());
+  }
 
   std::vector<StepEvent> events;
   RunOptions ro;

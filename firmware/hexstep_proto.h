@@ -28,11 +28,13 @@
 #define HXP_ABORT 0x06u  /* mask -> - */
 #define HXP_CLEAR 0x07u  /* - -> - (clears the e-stop latch and every axis's error flags) */
 #define HXP_STATUS 0x08u /* - -> status block */
+#define HXP_INFO 0x09u   /* - -> SPEED_W, ACC_W, STEP_W, DFRAC_W, PULSE_W of the core (u8 each) */
 
 #define HXP_PULSE_LEN 10u
 #define HXP_MOVE_LEN 66u
 #define HXP_MASK_LEN 1u
 #define HXP_HELLO_REPLY_LEN 14u  /* including the status byte */
+#define HXP_INFO_REPLY_LEN 6u    /* including the status byte */
 #define HXP_STATUS_AXIS_LEN 12u  /* fifo, hw free, err, flags, position (i64) */
 #define HXP_STATUS_REPLY_LEN (1u + 4u + 4u + 6u * HXP_STATUS_AXIS_LEN)
 

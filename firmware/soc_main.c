@@ -4,6 +4,12 @@
  * that keeps every running axis's 2-deep hardware queue full from a per-axis move FIFO in RAM
  * and receives, checks and answers frames. Memory map: soc/hexstep_soc.v.
  *
+ * One image serves every build of the SoC: the firmware reads the number of axes from the
+ * core's VERSION register (1..6; a board build may have fewer, synth/targets.json) and the
+ * widths of its move and pulse registers from their writable bits (a reduced build has
+ * narrower ones). A request naming an axis the core lacks is refused with E_ARG, a value
+ * wider than its register with E_RANGE: nothing is truncated.
+ *
  * Build-time settings (soc/CMakeLists.txt passes them):
  *   HXFW_BYTE_TIMEOUT  cycles without a byte after which a started frame is dropped (E_TIMEOUT)
  *   HXFW_FIFO_DEPTH    moves buffered per axis (power of two)
@@ -14,6 +20,7 @@
 
 #include "hexstep_drv.h"
 #include "hexstep_proto.h"
+#include "hexstep_regs.h"
 
 #ifndef HXFW_BYTE_TIMEOUT
 #define HXFW_BYTE_TIMEOUT 1000000u /* 10 ms at 100 MHz */
@@ -40,6 +47,14 @@ static inline uint32_t cycles(void) {
 
 /* ---- state ---- */
 static hexstep_dev_t dev;
+static unsigned naxes;     /* VERSION.naxes of the core, 1..HEXSTEP_NUM_AXES */
+static uint32_t axes_mask; /* its axes: (1 << naxes) - 1 */
+
+/* Writable bits of the staging words STEPS..DEC_FRAC (the order of hexstep_regs.h) and of the
+ * pulse timing registers: the widths of this build of the core. */
+#define STG_WORDS 17u
+static uint32_t stg_mask[STG_WORDS];
+static uint32_t pulse_mask;
 
 typedef struct {
   hexstep_move_t m[HXFW_FIFO_DEPTH];
@@ -100,6 +115,54 @@ static void put32(uint8_t *p, uint32_t v) {
   p[3] = (uint8_t)(v >> 24);
 }
 
+/* ---- the core: axes and register widths ---- */
+#define HS_AXIS_OFF(reg) \
+  ((uint32_t)(offsetof(hexstep_t, AXIS) + offsetof(hexstep__axis_t__stride80_t, reg)))
+#define HS_REG(off) (*(volatile uint32_t *)(HEXSTEP_BASE + (off)))
+
+/* The driver's hexstep_init accepts only the six-axis core; a board build may have fewer axes
+ * (their registers exist, the others read 0 and ignore writes). Waits for the core, then
+ * learns the widths on axis 0 (before hexstep_reset, which rewrites the pulse registers and
+ * the SoC has just left reset: the staging words are not in use). */
+static void core_init(void) {
+  unsigned i;
+  for (;;) {
+    const uint32_t ver = HS_REG(offsetof(hexstep_t, VERSION));
+    naxes = (ver & HEXSTEP__VERSION__NAXES_bm) >> HEXSTEP__VERSION__NAXES_bp;
+    if (HS_REG(offsetof(hexstep_t, ID)) == HEXSTEP_ID_MAGIC && naxes >= 1u && naxes <= HEXSTEP_NUM_AXES)
+      break;
+  }
+  axes_mask = (1u << naxes) - 1u;
+  dev.base = HEXSTEP_BASE;
+  dev.read = NULL;
+  dev.write = NULL;
+  dev.ctx = NULL;
+  for (i = 0; i < STG_WORDS; ++i) {
+    const uint32_t off = HS_AXIS_OFF(STEPS) + 4u * i;
+    HS_REG(off) = 0xFFFFFFFFu;
+    stg_mask[i] = HS_REG(off);
+    HS_REG(off) = 0u;
+  }
+  HS_REG(HS_AXIS_OFF(STEP_HIGH)) = 0xFFFFFFFFu;
+  pulse_mask = HS_REG(HS_AXIS_OFF(STEP_HIGH));
+}
+
+/* Every word of the move fits its staging register. */
+static bool move_fits(const hexstep_move_t *m) {
+  const uint32_t w[STG_WORDS] = {m->steps, m->dir,
+                                 (uint32_t)m->v_start, (uint32_t)(m->v_start >> 32),
+                                 (uint32_t)m->v_max, (uint32_t)(m->v_max >> 32),
+                                 (uint32_t)m->v_end, (uint32_t)(m->v_end >> 32),
+                                 (uint32_t)m->v_dec, (uint32_t)(m->v_dec >> 32),
+                                 (uint32_t)m->acc, (uint32_t)(m->acc >> 32),
+                                 (uint32_t)m->dec, (uint32_t)(m->dec >> 32),
+                                 m->acc_steps, m->dec_step, m->dec_frac};
+  unsigned i;
+  for (i = 0; i < STG_WORDS; ++i)
+    if ((w[i] & ~stg_mask[i]) != 0u) return false;
+  return true;
+}
+
 /* ---- motion ---- */
 static bool estop_latched(void) {
   bool latched = false;
@@ -109,7 +172,7 @@ static bool estop_latched(void) {
 
 static void flush(uint32_t mask) {
   unsigned k;
-  for (k = 0; k < HEXSTEP_NUM_AXES; ++k)
+  for (k = 0; k < naxes; ++k)
     if (mask & (1u << k)) fifo[k].head = fifo[k].count = 0u;
   active &= ~mask;
 }
@@ -128,10 +191,10 @@ static void service_axes(void) {
   unsigned k;
   if (active == 0u) return;
   if (estop_latched()) { /* the hardware aborted and flushed; drop what is buffered */
-    flush(HEXSTEP_ALL_AXES);
+    flush(axes_mask);
     return;
   }
-  for (k = 0; k < HEXSTEP_NUM_AXES; ++k) {
+  for (k = 0; k < naxes; ++k) {
     hexstep_axis_status_t st;
     if ((active & (1u << k)) == 0u) continue;
     if (hexstep_axis_status(&dev, k, &st) != HEXSTEP_OK) continue;
@@ -153,7 +216,7 @@ static void service_axes(void) {
 static unsigned cmd_hello(uint8_t *r) {
   r[0] = HXP_OK;
   r[1] = HXP_VERSION;
-  r[2] = HEXSTEP_NUM_AXES;
+  r[2] = (uint8_t)naxes;
   r[3] = HXFW_FIFO_DEPTH;
   r[4] = HXP_MAX_PAYLOAD;
   r[5] = 1u; /* controlled STOP (hexstep_stop) */
@@ -166,13 +229,16 @@ static unsigned cmd_pulse(const uint8_t *p, uint8_t *r) {
   hexstep_pulse_t pc;
   unsigned k = p[0];
   hexstep_axis_status_t st;
-  if (k >= HEXSTEP_NUM_AXES || (p[9] & ~3u) != 0u) return r[0] = HXP_E_ARG, 1u;
+  if (k >= naxes || (p[9] & ~3u) != 0u) return r[0] = HXP_E_ARG, 1u;
   pc.step_high = get16(p + 1);
   pc.step_low = get16(p + 3);
   pc.dir_setup = get16(p + 5);
   pc.dir_hold = get16(p + 7);
   pc.step_invert = p[9] & 1u;
   pc.dir_invert = (p[9] >> 1) & 1u;
+  if ((pc.step_high & ~pulse_mask) != 0u || (pc.step_low & ~pulse_mask) != 0u ||
+      (pc.dir_setup & ~pulse_mask) != 0u || (pc.dir_hold & ~pulse_mask) != 0u)
+    return r[0] = HXP_E_RANGE, 1u;
   if (hexstep_axis_status(&dev, k, &st) != HEXSTEP_OK) return r[0] = HXP_E_ARG, 1u;
   if ((active & (1u << k)) || st.busy || st.run || fifo[k].count != 0u) return r[0] = HXP_E_BUSY, 1u;
   if (hexstep_set_pulse(&dev, k, &pc) != HEXSTEP_OK) return r[0] = HXP_E_RANGE, 1u;
@@ -184,7 +250,7 @@ static unsigned cmd_move(const uint8_t *p, uint8_t *r) {
   unsigned k = p[0];
   hexstep_move_t m;
   fifo_t *f;
-  if (k >= HEXSTEP_NUM_AXES || p[5] > (1u | HEXSTEP_MOVE_JOG)) return r[0] = HXP_E_ARG, 1u;
+  if (k >= naxes || p[5] > (1u | HEXSTEP_MOVE_JOG)) return r[0] = HXP_E_ARG, 1u;
   m.steps = get32(p + 1);
   m.dir = p[5];
   m.v_start = get64(p + 6);
@@ -196,7 +262,7 @@ static unsigned cmd_move(const uint8_t *p, uint8_t *r) {
   m.acc_steps = get32(p + 54);
   m.dec_step = get32(p + 58);
   m.dec_frac = get32(p + 62);
-  if ((m.acc >> 44) != 0u || (m.dec >> 44) != 0u) return r[0] = HXP_E_RANGE, 1u;
+  if ((m.acc >> 44) != 0u || (m.dec >> 44) != 0u || !move_fits(&m)) return r[0] = HXP_E_RANGE, 1u;
   if (estop_latched()) return r[0] = HXP_E_ESTOP, 1u;
   f = &fifo[k];
   if (f->count >= HXFW_FIFO_DEPTH) {
@@ -215,9 +281,9 @@ static unsigned cmd_move(const uint8_t *p, uint8_t *r) {
 static unsigned cmd_start(const uint8_t *p, uint8_t *r) {
   uint32_t mask = p[0], go = 0u;
   unsigned k;
-  if ((mask & ~HEXSTEP_ALL_AXES) != 0u) return r[0] = HXP_E_ARG, 1u;
+  if ((mask & ~axes_mask) != 0u) return r[0] = HXP_E_ARG, 1u;
   if (estop_latched()) return r[0] = HXP_E_ESTOP, 1u;
-  for (k = 0; k < HEXSTEP_NUM_AXES; ++k) {
+  for (k = 0; k < naxes; ++k) {
     if ((mask & (1u << k)) == 0u || (active & (1u << k)) || fifo[k].count == 0u) continue;
     refill(k);
     go |= 1u << k;
@@ -235,7 +301,7 @@ static unsigned cmd_start(const uint8_t *p, uint8_t *r) {
 
 static unsigned cmd_abort(const uint8_t *p, uint8_t *r) {
   uint32_t mask = p[0];
-  if ((mask & ~HEXSTEP_ALL_AXES) != 0u) return r[0] = HXP_E_ARG, 1u;
+  if ((mask & ~axes_mask) != 0u) return r[0] = HXP_E_ARG, 1u;
   (void)hexstep_abort(&dev, mask);
   flush(mask);
   r[0] = HXP_OK;
@@ -246,7 +312,7 @@ static unsigned cmd_abort(const uint8_t *p, uint8_t *r) {
  * queue; the firmware drops the axis's FIFO. The axis stays busy until it is at rest. */
 static unsigned cmd_stop(const uint8_t *p, uint8_t *r) {
   uint32_t mask = p[0];
-  if ((mask & ~HEXSTEP_ALL_AXES) != 0u) return r[0] = HXP_E_ARG, 1u;
+  if ((mask & ~axes_mask) != 0u) return r[0] = HXP_E_ARG, 1u;
   flush(mask);
   (void)hexstep_stop(&dev, mask);
   r[0] = HXP_OK;
@@ -256,10 +322,30 @@ static unsigned cmd_stop(const uint8_t *p, uint8_t *r) {
 static unsigned cmd_clear(uint8_t *r) {
   unsigned k;
   hexstep_rc_t rc = hexstep_estop_clear(&dev);
-  for (k = 0; k < HEXSTEP_NUM_AXES; ++k) (void)hexstep_clear_errors(&dev, k, HEXSTEP_AXERR_ALL);
+  for (k = 0; k < naxes; ++k) (void)hexstep_clear_errors(&dev, k, HEXSTEP_AXERR_ALL);
   underrun = 0u;
   r[0] = rc == HEXSTEP_OK ? HXP_OK : HXP_E_ESTOP;
   return 1u;
+}
+
+static unsigned bits_set(uint32_t x) {
+  unsigned n = 0u;
+  for (; x != 0u; x &= x - 1u) ++n;
+  return n;
+}
+
+/* The widths of this build of the core, counted from the writable bits found by core_init
+ * (stg_mask in the order of hexstep_regs.h: STEPS, DIR, V_START lo/hi, V_MAX lo/hi, V_END lo/hi,
+ * V_DEC lo/hi, ACC lo/hi, DEC lo/hi, ACC_STEPS, DEC_STEP, DEC_FRAC). The host compares them
+ * with the widths its job was planned for. */
+static unsigned cmd_info(uint8_t *r) {
+  r[0] = HXP_OK;
+  r[1] = (uint8_t)(bits_set(stg_mask[4]) + bits_set(stg_mask[5])); /* V_MAX: SPEED_W */
+  r[2] = (uint8_t)(bits_set(stg_mask[10]) + bits_set(stg_mask[11])); /* ACC: ACC_W */
+  r[3] = (uint8_t)bits_set(stg_mask[0]);                             /* STEPS: STEP_W */
+  r[4] = (uint8_t)bits_set(stg_mask[16]);                            /* DEC_FRAC: DFRAC_W */
+  r[5] = (uint8_t)bits_set(pulse_mask);                              /* STEP_HIGH: PULSE_W */
+  return HXP_INFO_REPLY_LEN;
 }
 
 static unsigned cmd_status(uint8_t *r) {
@@ -267,7 +353,7 @@ static unsigned cmd_status(uint8_t *r) {
   uint32_t busy = 0u;
   unsigned k;
   (void)hexstep_estop_status(&dev, &latched, &pin);
-  (void)hexstep_busy(&dev, HEXSTEP_ALL_AXES, &busy);
+  (void)hexstep_busy(&dev, axes_mask, &busy);
   r[0] = HXP_OK;
   r[1] = (uint8_t)((latched ? HXP_G_ESTOP : 0u) | (pin ? HXP_G_ESTOP_PIN : 0u) |
                    ((SYS_STATUS & SYS_IRQ) ? HXP_G_IRQ : 0u));
@@ -297,7 +383,7 @@ static unsigned cmd_status(uint8_t *r) {
 /* Length each command's request payload must have. */
 static int request_len(uint8_t cmd) {
   switch (cmd) {
-    case HXP_HELLO: case HXP_CLEAR: case HXP_STATUS: return 0;
+    case HXP_HELLO: case HXP_CLEAR: case HXP_STATUS: case HXP_INFO: return 0;
     case HXP_PULSE: return HXP_PULSE_LEN;
     case HXP_MOVE: return HXP_MOVE_LEN;
     case HXP_START: case HXP_STOP: case HXP_ABORT: return HXP_MASK_LEN;
@@ -324,6 +410,7 @@ static void execute(uint8_t seq, uint8_t cmd, const uint8_t *p, unsigned n) {
     case HXP_STOP: len = cmd_stop(p, r); break;
     case HXP_ABORT: len = cmd_abort(p, r); break;
     case HXP_CLEAR: len = cmd_clear(r); break;
+    case HXP_INFO: len = cmd_info(r); break;
     default: len = cmd_status(r); break;
   }
   /* Refused requests change nothing and may be sent again with the same SEQ. */
@@ -347,8 +434,7 @@ int main(void) {
   uint16_t crc = 0xFFFFu;
   uint32_t last_byte = 0u;
 
-  while (hexstep_init(&dev, HEXSTEP_BASE, NULL, NULL, NULL) != HEXSTEP_OK) {
-  }
+  core_init();
   (void)hexstep_reset(&dev);
   /* The IRQ line (SYS_STATUS) says when a queue slot freed, a move ended or an error appeared:
    * the loop services the axes only then, or when it has just changed them itself. */

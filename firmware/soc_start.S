@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: Apache-2.0
  * hexstep SoC firmware: reset entry. The image runs where it is loaded (on-chip RAM from 0),
- * so only the stack and .bss need setting up. */
+ * so only .bss needs setting up. The stack pointer is PicoRV32's reset value (STACKADDR =
+ * RAM_WORDS * 4 in soc/hexstep_soc.v): the top of the RAM of this build, which a board build
+ * may make smaller than the 16 KiB of firmware/soc.ld (synth/flow.py checks the fit). */
   .section .text.start
   .globl _start
 _start:
-  la sp, _stack_top
   la t0, _bss_start
   la t1, _bss_end
 1:

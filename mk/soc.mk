@@ -3,18 +3,27 @@
 # pythondata-cpu-picorv32 (scripts/deps/soc.pip), located at run time, never copied.
 # `make demo` ends with the plan -> send -> firmware -> core chain (scripts/demo.sh).
 SOC_RTL := soc/hexstep_soc.v soc/hexstep_soc_ram.v soc/hexstep_soc_uart.v
+# Board tops of the SoC (soc/boards/hexstep_soc_<board>.v, built by `make synth-soc_<board>`,
+# mk/synth.mk): linted with their default parameters too.
+SOC_BOARDS := icebreaker ulx3s
 SOC_PICORV32 = $(shell $(VENV)/bin/python -c "import pythondata_cpu_picorv32 as p; print(p.data_location)")/picorv32.v
 .PHONY: soc-lint
 
 soc-lint: deps
 	verilator --lint-only -Wall --timescale 1ns/1ps -Irtl soc/hexstep_soc_waiver.vlt rtl/verilator_waiver.vlt \
 	  $(SOC_PICORV32) rtl/hexstep_top.v $(SOC_RTL) --top-module hexstep_soc
+	for b in $(SOC_BOARDS); do \
+	  verilator --lint-only -Wall --timescale 1ns/1ps -Irtl soc/hexstep_soc_waiver.vlt rtl/verilator_waiver.vlt \
+	    $(SOC_PICORV32) rtl/hexstep_top.v $(SOC_RTL) rtl/boards/hexstep_board_reset.v soc/boards/hexstep_soc_board.v \
+	    soc/boards/hexstep_soc_$$b.v --top-module hexstep_soc_$$b || exit 1; \
+	done
 
 test: soc-lint
 
 # Cell counts of the whole SoC (PicoRV32 + default six-axis hexstep_top + RAM + UART) after
-# Yosys synth_ecp5, before place and route: $(BUILD)/soc/stat.txt. Not a board build (the
-# board flow of synth/ has no SoC target yet). Slow: about 15 minutes on a busy 2-core machine.
+# Yosys synth_ecp5, before place and route: $(BUILD)/soc/stat.txt. Not a board build (those are
+# `make synth-soc_icebreaker` / `make synth-soc_ulx3s`, docs/SYNTH.md). Slow: about 15 minutes
+# on a busy 2-core machine.
 .PHONY: soc-stat
 soc-stat: build
 	@mkdir -p $(BUILD)/soc

@@ -9,11 +9,17 @@
 # its core clock, or any Yosys warning not in synth/yosys_waivers.txt on a board, fails the job
 # after the remaining targets have run. `make test` runs the bounded slice: ctest label `tool`
 # (synth/CMakeLists.txt).
+# SoC board builds (soc/boards/, targets soc_*): PicoRV32 + firmware + hexstep_top; the firmware
+# image is $(BUILD)/soc/hexstep_fw.hex from the firmware build (built first). They are not part
+# of `make synth` (soc_ulx3s alone takes about half an hour): make synth-soc_icebreaker,
+# make synth-soc_ulx3s, or make synth-soc for both and the summary table.
 SYNTH_FLOW    := $(VENV)/bin/python3 synth/flow.py
 SYNTH_TARGETS := ooc_hx8k ooc_up5k ooc_ecp5_25f ooc_ecp5_85f icebreaker ulx3s colorlight_i5
+SYNTH_SOC_TARGETS := soc_icebreaker soc_ulx3s
 SYNTH_OUT     := $(BUILD)/synth-out
+SOC_FW_HEX    := $(BUILD)/soc/hexstep_fw.hex
 
-.PHONY: synth $(addprefix synth-,$(SYNTH_TARGETS))
+.PHONY: synth synth-soc soc-fw $(addprefix synth-,$(SYNTH_TARGETS) $(SYNTH_SOC_TARGETS))
 
 synth: deps
 	@r=0; for t in $(SYNTH_TARGETS); do \
@@ -24,3 +30,16 @@ synth: deps
 
 $(addprefix synth-,$(SYNTH_TARGETS)): synth-%: deps
 	$(SYNTH_FLOW) build $* --out $(SYNTH_OUT)
+
+soc-fw: deps $(BUILD)/build.ninja
+	cmake --build $(BUILD) --target hexstep_fw
+
+$(addprefix synth-,$(SYNTH_SOC_TARGETS)): synth-%: soc-fw
+	$(SYNTH_FLOW) build $* --out $(SYNTH_OUT) --firmware $(SOC_FW_HEX)
+
+synth-soc: soc-fw
+	@r=0; for t in $(SYNTH_SOC_TARGETS); do \
+	  $(SYNTH_FLOW) build $$t --out $(SYNTH_OUT) --firmware $(SOC_FW_HEX) || r=1; \
+	done; \
+	$(SYNTH_FLOW) summary --doc docs/SYNTH.md || r=1; \
+	exit $$r

@@ -13,10 +13,27 @@
 // CPU: picorv32_wb from the PyPI package pythondata-cpu-picorv32 (not in this repository),
 // RV32I without compressed instructions, multiplier or interrupts: the firmware polls the IRQ
 // level in SYS (PicoRV32 interrupts need its own non-standard instructions).
+// Parameters beyond RAM/UART (board builds, synth/targets.json; the defaults are the simulated
+// SoC of the end-to-end tests): the hexstep_top configuration (NAXES, widths; see hexstep_top)
+// and four PicoRV32 options that trade speed for area without changing the instruction set.
+// Axes k >= NAXES drive STEP/DIR low; the firmware reads NAXES from the VERSION register.
 module hexstep_soc #(
-  parameter integer RAM_WORDS = 4096,  // 16 KiB: firmware (< 8 KiB), move FIFOs, stack
+  parameter integer RAM_WORDS = 4096,  // 16 KiB: firmware, move FIFOs, stack (sp = RAM_WORDS * 4
+                                       //   at reset); any size >= the image + .bss + 1 KiB stack
   parameter         INIT_FILE = "",    // firmware image for $readmemh (built by soc/CMakeLists.txt)
-  parameter integer UART_DIV  = 868    // UART cycles per bit at reset (100 MHz / 115200)
+  parameter integer UART_DIV  = 868,   // UART cycles per bit at reset (100 MHz / 115200)
+  parameter integer NAXES     = 6,     // hexstep_top parameters, 1..6 here (six STEP/DIR pins)
+  parameter integer SPEED_W   = 64,
+  parameter integer ACC_W     = 44,
+  parameter integer STEP_W    = 32,
+  parameter integer DFRAC_W   = 32,
+  parameter integer PULSE_W   = 12,
+  parameter integer POS_W     = 32,
+  parameter integer OWE_W     = 2,
+  parameter [0:0]   CPU_BARREL_SHIFTER  = 1,  // 0: shifts one bit (or four) per cycle
+  parameter [0:0]   CPU_TWO_STAGE_SHIFT = 1,  // with CPU_BARREL_SHIFTER 0: 4-bit steps first
+  parameter [0:0]   CPU_CATCH_MISALIGN  = 1,  // 0: no trap on a misaligned access
+  parameter [0:0]   CPU_CATCH_ILLINSN   = 1   // 0: no trap on an illegal instruction
 ) (
   input  wire       clk_i,
   input  wire       rst_i,     // synchronous, active high
@@ -36,8 +53,9 @@ module hexstep_soc #(
 
   picorv32_wb #(
     .ENABLE_COUNTERS (1), .ENABLE_COUNTERS64 (0), .COMPRESSED_ISA (0), .ENABLE_MUL (0),
-    .ENABLE_DIV (0), .ENABLE_IRQ (0), .BARREL_SHIFTER (1), .CATCH_MISALIGN (1),
-    .CATCH_ILLINSN (1), .PROGADDR_RESET (32'h0), .STACKADDR (RAM_WORDS * 4)
+    .ENABLE_DIV (0), .ENABLE_IRQ (0), .BARREL_SHIFTER (CPU_BARREL_SHIFTER),
+    .TWO_STAGE_SHIFT (CPU_TWO_STAGE_SHIFT), .CATCH_MISALIGN (CPU_CATCH_MISALIGN),
+    .CATCH_ILLINSN (CPU_CATCH_ILLINSN), .PROGADDR_RESET (32'h0), .STACKADDR (RAM_WORDS * 4)
   ) u_cpu (
     .trap (trap_o), .wb_rst_i (rst_i), .wb_clk_i (clk_i),
     .wbm_adr_o (adr), .wbm_dat_o (dat_w), .wbm_dat_i (dat_r), .wbm_we_o (we),
@@ -70,11 +88,24 @@ module hexstep_soc #(
     .rx_i (uart_rx_i), .tx_o (uart_tx_o)
   );
 
-  hexstep_top u_hexstep (
+  wire [NAXES-1:0] hs_step, hs_dir;
+  hexstep_top #(
+    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W)
+  ) u_hexstep (
     .clk_i (clk_i), .rst_i (rst_i), .wb_cyc_i (cyc), .wb_stb_i (stb & s_hs), .wb_we_i (we),
     .wb_adr_i (adr[11:0]), .wb_dat_i (dat_w), .wb_sel_i (sel), .wb_dat_o (hs_dat),
-    .wb_ack_o (hs_ack), .estop_i (estop_i), .irq_o (irq_o), .step_o (step_o), .dir_o (dir_o)
+    .wb_ack_o (hs_ack), .estop_i (estop_i), .irq_o (irq_o), .step_o (hs_step), .dir_o (hs_dir)
   );
+  generate
+    if (NAXES < 6) begin : g_pad
+      assign step_o = {{(6-NAXES){1'b0}}, hs_step};
+      assign dir_o  = {{(6-NAXES){1'b0}}, hs_dir};
+    end else begin : g_all
+      assign step_o = hs_step;
+      assign dir_o  = hs_dir;
+    end
+  endgenerate
 
   // ---- SYS register and the default slave ----
   reg [1:0] estop_sync_q;

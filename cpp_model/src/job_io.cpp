@@ -2,6 +2,7 @@
 // hexstep: the job file (JSON) to and from hexstep::Job. docs/FORMATS.md is the user's view.
 #include "hexstep/job_io.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -169,6 +170,24 @@ PulseConfig read_pulse(const json& j, const std::string& path, const Widths& w) 
   return p;
 }
 
+Widths read_widths(const json& j, const std::string& path, const Widths& dflt) {
+  Obj o(j, path, "a widths object",
+        std::vector<const char*>(kWidthNames, kWidthNames + kNumWidths));
+  o.reject_unknown();
+  Widths w = dflt;
+  // SPEED_W first: the ranges of ACC_W and DFRAC_W depend on it.
+  for (unsigned i = 0; i < kNumWidths; ++i) {
+    unsigned lo = 0, hi = 0;
+    width_range(w, i, lo, hi);
+    if (const json* v = o.opt(kWidthNames[i]))
+      width_ref(w, i) = static_cast<unsigned>(get_uint(*v, o.sub(kWidthNames[i]), lo, hi, " bits"));
+  }
+  const std::string e = widths_error(w);  // a default that the new SPEED_W no longer allows
+  if (!e.empty())
+    fail(path + "." + e.substr(0, e.find(':')), e.substr(e.find(':') + 2) + " (not given: its default)");
+  return w;
+}
+
 json parse_json(const std::string& text) {
   try {
     return parse_strict_json(text);
@@ -179,6 +198,63 @@ json parse_json(const std::string& text) {
 }
 
 }  // namespace
+
+const char* const kWidthNames[kNumWidths] = {"SPEED_W", "ACC_W",  "STEP_W", "DFRAC_W",
+                                             "PULSE_W", "POS_W", "OWE_W"};
+
+unsigned& width_ref(Widths& w, unsigned i) {
+  switch (i) {
+    case 0: return w.speed_frac;
+    case 1: return w.acc;
+    case 2: return w.steps;
+    case 3: return w.dec_frac;
+    case 4: return w.pulse;
+    case 5: return w.pos;
+    default: return w.owe;
+  }
+}
+
+unsigned width_of(const Widths& w, unsigned i) {
+  Widths c = w;
+  return width_ref(c, i);
+}
+
+void width_range(const Widths& w, unsigned i, unsigned& lo, unsigned& hi) {
+  // rtl/hexstep_axis.v: SPEED_W 2..64, ACC_W and DFRAC_W 1..SPEED_W (DFRAC_W at most 32: the
+  // model and job files hold dec_frac in 32 bits), STEP_W 1..32, PULSE_W 1..30, POS_W 2..64,
+  // OWE_W 1..16.
+  static const unsigned kLo[kNumWidths] = {2, 1, 1, 1, 1, 2, 1};
+  static const unsigned kHi[kNumWidths] = {64, 64, 32, 32, 30, 64, 16};
+  lo = kLo[i];
+  hi = kHi[i];
+  if (i == 1 || i == 3) hi = std::min(hi, w.speed_frac);
+}
+
+std::string widths_error(const Widths& w) {
+  for (unsigned i = 0; i < kNumWidths; ++i) {
+    unsigned lo = 0, hi = 0;
+    width_range(w, i, lo, hi);
+    const unsigned v = width_of(w, i);
+    if (v < lo || v > hi)
+      return std::string(kWidthNames[i]) + ": " + range_text(lo, hi) +
+             (i == 1 || i == 3 ? " (at most SPEED_W = " + std::to_string(w.speed_frac) + ")" : "") +
+             ", got " + std::to_string(v);
+  }
+  return "";
+}
+
+std::string widths_text(const Widths& w) {
+  std::string s;
+  for (unsigned i = 0; i < kNumWidths; ++i)
+    s += (i ? ", " : "") + std::string(kWidthNames[i]) + " " + std::to_string(width_of(w, i));
+  return s;
+}
+
+bool same_widths(const Widths& a, const Widths& b) {
+  for (unsigned i = 0; i < kNumWidths; ++i)
+    if (width_of(a, i) != width_of(b, i)) return false;
+  return true;
+}
 
 std::string describe_move_error(uint32_t err, const AxisMove& m, const std::string& path,
                                 const Widths& w) {
@@ -226,7 +302,7 @@ std::string describe_move_error(uint32_t err, const AxisMove& m, const std::stri
 Job parse_job(const std::string& text, const Widths& w) {
   const json root = parse_json(text);
   if (!root.is_object()) fail("(top level)", "must be a JSON object, " + json_got(root));
-  Obj o(root, "", "a JSON object", {"format", "version", "clock_hz", "axes"});
+  Obj o(root, "", "a JSON object", {"format", "version", "clock_hz", "widths", "axes"});
   {
     const std::string accepts = std::string("must be the string \"") + kFormat + "\"";
     const json& f = o.req("format", accepts);
@@ -239,6 +315,9 @@ Job parse_job(const std::string& text, const Widths& w) {
 
   Job job;
   job.clock_hz = read_uint(o, {"clock_hz", 1, kClockMax, " Hz"});
+  if (const std::string e = widths_error(w); !e.empty()) fail("widths", "default " + e);
+  job.widths = w;
+  if (const json* v = o.opt("widths")) job.widths = read_widths(*v, "widths", w);
 
   const char* const axes_accepts = "must be an array of axis objects (at most 6)";
   const json& axes = o.req("axes", axes_accepts);
@@ -258,12 +337,12 @@ Job parse_job(const std::string& text, const Widths& w) {
                               " again (also in axes[" + std::to_string(seen_at[idx]) + "])");
     seen_at[idx] = static_cast<int>(i);
     AxisJob& aj = job.axes[idx];
-    if (const json* p = a.opt("pulse")) aj.pulse = read_pulse(*p, a.sub("pulse"), w);
+    if (const json* p = a.opt("pulse")) aj.pulse = read_pulse(*p, a.sub("pulse"), job.widths);
     const char* const moves_accepts = "must be an array of move objects (may be empty)";
     const json& moves = a.req("moves", moves_accepts);
     if (!moves.is_array()) fail(a.sub("moves"), std::string(moves_accepts) + ", " + json_got(moves));
     for (size_t k = 0; k < moves.size(); ++k)
-      aj.moves.push_back(read_move(moves[k], a.sub("moves") + "[" + std::to_string(k) + "]", w));
+      aj.moves.push_back(read_move(moves[k], a.sub("moves") + "[" + std::to_string(k) + "]", job.widths));
   }
   return job;
 }
@@ -273,6 +352,11 @@ std::string write_job(const Job& job) {
   root["format"] = kFormat;
   root["version"] = kVersion;
   root["clock_hz"] = job.clock_hz;
+  if (!same_widths(job.widths, Widths{})) {
+    ojson wj = ojson::object();
+    for (unsigned i = 0; i < kNumWidths; ++i) wj[kWidthNames[i]] = width_of(job.widths, i);
+    root["widths"] = std::move(wj);
+  }
   ojson axes = ojson::array();
   for (unsigned i = 0; i < kNumAxes; ++i) {
     const AxisJob& aj = job.axes[i];
@@ -323,7 +407,7 @@ bool same_pulse(const PulseConfig& a, const PulseConfig& b) {
 }
 
 bool same_job(const Job& a, const Job& b) {
-  if (a.clock_hz != b.clock_hz) return false;
+  if (a.clock_hz != b.clock_hz || !same_widths(a.widths, b.widths)) return false;
   for (unsigned i = 0; i < kNumAxes; ++i) {
     const AxisJob& x = a.axes[i];
     const AxisJob& y = b.axes[i];

@@ -38,31 +38,13 @@ module hexstep_board #(
   output wire             estop_o       // synchronized E-STOP pin (for an LED)
 );
 
-  // ---- reset: asynchronous assertion, synchronous release after RST_CYCLES ----
-  reg [1:0]  rs_q;
-  reg [15:0] rcnt_q;
-  reg        rst_q;
-  always @(posedge clk_i or posedge rst_i) begin
-    if (rst_i) begin
-      rs_q <= 2'b00;  rcnt_q <= 16'd0;  rst_q <= 1'b1;
-    end else begin
-      rs_q <= {rs_q[0], 1'b1};
-      if (!rs_q[1]) begin
-        rcnt_q <= 16'd0;  rst_q <= 1'b1;
-      end else if (rcnt_q != RST_CYCLES[15:0] - 16'd1) begin
-        rcnt_q <= rcnt_q + 16'd1;  rst_q <= 1'b1;
-      end else begin
-        rst_q <= 1'b0;
-      end
-    end
-  end
+  // ---- reset release, E-STOP synchronizer, driver enables (rtl/boards/hexstep_board_reset.v) ----
+  wire board_rst, estop_sync;
+  hexstep_board_reset #(.NAXES (NAXES), .PINS (PINS), .RST_CYCLES (RST_CYCLES)) u_rst (
+    .clk_i (clk_i), .rst_i (rst_i), .estop_i (estop_i),
+    .rst_o (board_rst), .estop_o (estop_sync), .en_n_o (en_n_o)
+  );
 
-  // ---- E-STOP synchronizer ----
-  reg [1:0] es_q;
-  always @(posedge clk_i) es_q <= {es_q[0], estop_i};
-
-  reg [NAXES-1:0] en_n_q;
-  always @(posedge clk_i) en_n_q <= {NAXES{rst_q | es_q[1]}};
   wire [NAXES-1:0] step, dir;
 
   localparam integer ADDR_W = 12;
@@ -72,7 +54,7 @@ module hexstep_board #(
   wire [3:0]        sel;
 
   hexstep_spi_wb #(.ADDR_W (ADDR_W)) u_spi (
-    .clk_i (clk_i), .rst_i (rst_q),
+    .clk_i (clk_i), .rst_i (board_rst),
     .spi_sck_i (spi_sck_i), .spi_cs_n_i (spi_cs_n_i), .spi_mosi_i (spi_mosi_i),
     .spi_miso_o (spi_miso_o), .spi_miso_oe_o (spi_miso_oe_o),
     .wb_cyc_o (cyc), .wb_stb_o (stb), .wb_we_o (we), .wb_adr_o (adr), .wb_dat_o (wdat),
@@ -83,24 +65,22 @@ module hexstep_board #(
     .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
     .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .ADDR_W (ADDR_W)
   ) u_top (
-    .clk_i (clk_i), .rst_i (rst_q),
+    .clk_i (clk_i), .rst_i (board_rst),
     .wb_cyc_i (cyc), .wb_stb_i (stb), .wb_we_i (we), .wb_adr_i (adr), .wb_dat_i (wdat),
     .wb_sel_i (sel), .wb_dat_o (rdat), .wb_ack_o (ack),
-    .estop_i (es_q[1]), .irq_o (irq_o), .step_o (step), .dir_o (dir)
+    .estop_i (estop_sync), .irq_o (irq_o), .step_o (step), .dir_o (dir)
   );
 
   generate
     if (PINS > NAXES) begin : g_unused
       assign step_o = {{(PINS-NAXES){1'b0}}, step};
       assign dir_o  = {{(PINS-NAXES){1'b0}}, dir};
-      assign en_n_o = {{(PINS-NAXES){1'b1}}, en_n_q};
     end else begin : g_all
       assign step_o = step;
       assign dir_o  = dir;
-      assign en_n_o = en_n_q;
     end
   endgenerate
-  assign estop_o = es_q[1];
+  assign estop_o = estop_sync;
 
 endmodule
 

@@ -269,7 +269,7 @@ TEST(JobIoErrors, TopLevel) {
 }
 
 TEST(JobIoErrors, UnknownFields) {
-  EXPECT_HAS(error_of(with([](json& j) { j["clockhz"] = 1; })), "clockhz: unknown field (accepted here: format, version, clock_hz, axes)");
+  EXPECT_HAS(error_of(with([](json& j) { j["clockhz"] = 1; })), "clockhz: unknown field (accepted here: format, version, clock_hz, widths, axes)");
   EXPECT_HAS(error_of(with([](json& j) { j["axes"][1]["pluse"] = json::object(); })), "axes[1].pluse: unknown field");
   EXPECT_HAS(error_of(with([](json& j) { j["axes"][0]["pulse"]["step_hi"] = 3; })), "axes[0].pulse.step_hi: unknown field (accepted here: step_high,");
   EXPECT_HAS(error_of(with([](json& j) { j["axes"][0]["moves"][1]["vmax"] = 3; })), "axes[0].moves[1].vmax: unknown field (accepted here: steps, dir, v_start, v_max,");
@@ -385,6 +385,61 @@ TEST(JobIoErrors, RangesFollowTheWidths) {
     c.set(j);
     EXPECT_HAS(error_of(j.dump(), w), c.message);
   }
+}
+
+// The file's own widths object: the same narrowing as above, written in the job.
+TEST(JobIoWidths, WidthsObjectSetsTheRangesAndRoundTrips) {
+  const json small = {{"steps", 100}, {"dir", 1},  {"v_start", 1000}, {"v_max", 1000},
+                      {"v_end", 1000}, {"acc", 0}, {"dec", 0},        {"v_dec", 1000},
+                      {"acc_steps", 0}, {"dec_step", 100}, {"dec_frac", 0}};
+  json j = valid_job();
+  for (auto& a : j["axes"])
+    for (auto& m : a["moves"]) m = small;
+  // The iCEBreaker SoC build (synth/targets.json soc_icebreaker); OWE_W left at its default.
+  j["widths"] = {{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8},
+                 {"POS_W", 16}};
+  const Job job = hexstep::parse_job(j.dump());
+  EXPECT_EQ(job.widths.speed_frac, 24u);
+  EXPECT_EQ(job.widths.acc, 12u);
+  EXPECT_EQ(job.widths.steps, 16u);
+  EXPECT_EQ(job.widths.dec_frac, 8u);
+  EXPECT_EQ(job.widths.pulse, 8u);
+  EXPECT_EQ(job.widths.pos, 16u);
+  EXPECT_EQ(job.widths.owe, 2u);
+  // Written with all seven fields, read back equal; a default job has no widths object.
+  const std::string text = hexstep::write_job(job);
+  const json back = json::parse(text);
+  EXPECT_EQ(back["widths"], (json{{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8},
+                                  {"PULSE_W", 8}, {"POS_W", 16}, {"OWE_W", 2}}));
+  EXPECT_TRUE(hexstep::same_job(hexstep::parse_job(text), job));
+  EXPECT_FALSE(json::parse(hexstep::write_job(hexstep::parse_job(valid_job().dump()))).contains("widths"));
+  Job other = job;
+  other.widths.owe = 3;
+  EXPECT_FALSE(hexstep::same_job(job, other));
+  // Values are checked against the file's widths, not the default ones.
+  j["axes"][0]["moves"][0]["v_max"] = 1ull << 24;
+  EXPECT_HAS(error_of(j), "axes[0].moves[0].v_max: must be an integer in [0, 16777215] (SPEED_W = 24 bits)");
+  j["axes"][0]["moves"][0]["v_max"] = 1000;
+  j["axes"][0]["pulse"]["step_high"] = 256;
+  EXPECT_HAS(error_of(j), "axes[0].pulse.step_high: must be an integer in [0, 255] cycles (PULSE_W = 8 bits)");
+}
+
+TEST(JobIoWidths, BadWidthsNameTheFieldAndRange) {
+  auto err = [](const json& w) {
+    json j = valid_job();
+    j["widths"] = w;
+    return error_of(j);
+  };
+  EXPECT_HAS(err({{"SPEED_W", 65}}), "widths.SPEED_W: must be an integer in [2, 64] bits, got 65");
+  EXPECT_HAS(err({{"SPEED_W", 1}}), "widths.SPEED_W: must be an integer in [2, 64] bits, got 1");
+  EXPECT_HAS(err({{"SPEED_W", 24}, {"ACC_W", 30}}), "widths.ACC_W: must be an integer in [1, 24] bits, got 30");
+  EXPECT_HAS(err({{"STEP_W", 33}}), "widths.STEP_W: must be an integer in [1, 32] bits, got 33");
+  EXPECT_HAS(err({{"PULSE_W", 0}}), "widths.PULSE_W: must be an integer in [1, 30] bits, got 0");
+  EXPECT_HAS(err({{"OWE_W", 17}}), "widths.OWE_W: must be an integer in [1, 16] bits, got 17");
+  // ACC_W left out keeps its default 44, which SPEED_W 24 no longer allows.
+  EXPECT_HAS(err({{"SPEED_W", 24}}), "widths.ACC_W: must be an integer in [1, 24] (at most SPEED_W = 24), got 44 (not given: its default)");
+  EXPECT_HAS(err({{"FOO_W", 3}}), "widths.FOO_W");
+  EXPECT_HAS(err(json::array({24})), "widths: must be a widths object");
 }
 
 TEST(JobIoErrors, MovesTheCoreWouldRefuse) {

@@ -346,6 +346,62 @@ TEST_F(Plan, AxisClockAndPulse) {
                2, {"--max-speed", "[0, 125000] steps/s"});
 }
 
+// --widths: registers for a narrower core build (the iCEBreaker SoC's), computed by hand with
+// 2^SPEED_W = 2^24 at 12 MHz: speed = floor(v / f * 2^24), acceleration = floor(a / f^2 * 2^24).
+TEST_F(Plan, WidthsOfAReducedBuild) {
+  const std::string wid = "SPEED_W=24,ACC_W=12,STEP_W=16,DFRAC_W=8,PULSE_W=8,POS_W=16";
+  const std::vector<std::string> base = {"--steps", "5000", "--start-speed", "20000", "--max-speed", "1e6",
+                                         "--accel", "1e9", "--decel", "5e8", "--clock-hz", "12e6"};
+  std::vector<std::string> args = base;
+  args.insert(args.end(), {"--widths", wid});
+  const json j = plan_json(args);
+  EXPECT_EQ(j["widths"], (json{{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8},
+                               {"POS_W", 16}, {"OWE_W", 2}}));
+  const json& r = j["axes"][0]["registers"];
+  EXPECT_EQ(r["v_max"].get<uint64_t>(), 1398101u);  // 10^6 / 12e6 * 2^24 = 1398101.33
+  EXPECT_EQ(r["v_end"].get<uint64_t>(), 27962u);    // 2e4 / 12e6 * 2^24 = 27962.03
+  EXPECT_EQ(r["acc"].get<uint64_t>(), 116u);        // 1e9 / 1.44e14 * 2^24 = 116.51
+  EXPECT_EQ(r["dec"].get<uint64_t>(), 58u);         // 5e8 / 1.44e14 * 2^24 = 58.25
+  EXPECT_LE(r["dec_frac"].get<uint64_t>(), 255u);
+  // The default build: no widths object (1e9 steps/s^2 is above its ACC range at 12 MHz).
+  EXPECT_FALSE(plan_json({"--steps", "5000", "--max-speed", "1e6", "--accel", "1e8", "--clock-hz", "12e6"})
+                   .contains("widths"));
+  // The job and the C header record them.
+  args.insert(args.end(), {"--format", "job"});
+  const Result job = plan(args);
+  ASSERT_EQ(job.rc, 0) << job.err;
+  EXPECT_EQ(json::parse(job.out)["widths"]["SPEED_W"], 24);
+  args.back() = "c";
+  const Result c = plan(args);
+  ASSERT_EQ(c.rc, 0) << c.err;
+  EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_SPEED_W 24\n"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_DFRAC_W 8\n"), std::string::npos) << c.out;
+  // Ranges follow the widths; each error names the flag and the range.
+  auto with = [&](std::vector<std::string> more, const std::string& w) {
+    std::vector<std::string> a = base;
+    for (size_t i = 0; i + 1 < a.size(); i += 2)
+      for (size_t k = 0; k + 1 < more.size(); k += 2)
+        if (a[i] == more[k]) {
+          a[i + 1] = more[k + 1];
+          more[k].clear();
+        }
+    for (size_t k = 0; k + 1 < more.size(); k += 2)
+      if (!more[k].empty()) a.insert(a.end(), {more[k], more[k + 1]});
+    a.insert(a.end(), {"--widths", w});
+    return a;
+  };
+  expect_error(with({"--step-high", "256"}, wid), 2, {"--step-high", "[0, 255] clock cycles (PULSE_W = 8 bits"});
+  expect_error(with({"--steps", "65536"}, wid), 2, {"--steps", "[0, 65535]"});
+  // 10^6 steps/s^2 is below one LSB (8.58e6 steps/s^2) of ACC at SPEED_W 24 and 12 MHz.
+  expect_error(with({"--accel", "1e6"}, wid), 2, {"--accel", "cannot be represented"});
+  expect_error(with({}, "SPEED_W=24"), 2, {"--widths ACC_W", "[1, 24]", "got 44 (not given: its default)"});
+  expect_error(with({}, "SPEED_W=24,ACC_W=30"), 2, {"--widths ACC_W", "[1, 24]", "got 30"});
+  expect_error(with({}, "SPEED_W=65"), 2, {"--widths SPEED_W", "[2, 64]"});
+  expect_error(with({}, "SPEED_W=24,SPEED_W=30"), 2, {"--widths", "each at most once", "'SPEED_W=30'"});
+  expect_error(with({}, "FOO_W=3"), 2, {"--widths", "NAME one of SPEED_W", "'FOO_W=3'"});
+  expect_error(with({}, "SPEED_W=x"), 2, {"--widths SPEED_W", "got 'x'"});
+}
+
 TEST_F(Plan, OutFileAndFormats) {
   const std::vector<std::string> move = {"--steps", "-700", "--max-speed", "5000", "--accel", "100000"};
   for (const char* fmt : {"json", "c", "csv", "job"}) {
@@ -587,7 +643,7 @@ TEST_F(Plan, HelpExplainsEveryFlag) {
   for (const char* f : {"--steps", "--distance", "--unit", "--steps-per-rev", "--steps-per-mm", "--pitch-mm",
                         "--start-speed", "--end-speed", "--max-speed", "--accel", "--decel", "--ratio", "--time",
                         "--clock-hz", "--axis", "--job", "--format", "--out", "--step-high", "--step-low",
-                        "--dir-setup", "--dir-hold", "UNIT/s", "UNIT/s^2", "clock cycles", "Exit status"})
+                        "--dir-setup", "--dir-hold", "--widths", "UNIT/s", "UNIT/s^2", "clock cycles", "Exit status"})
     EXPECT_NE(r.out.find(f), std::string::npos) << f;
 }
 

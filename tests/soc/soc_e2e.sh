@@ -3,7 +3,8 @@
 # End to end on the simulated SoC: hexstep plan -> hexstep send -> pseudo-terminal -> UART ->
 # firmware -> Wishbone -> hexstep core; the STEP/DIR edges recorded by hexstep-soc-sim must equal
 # `hexstep simulate --engine model` on the same job, byte for byte.
-# usage: soc_e2e.sh HEXSTEP SOC_SIM SOC_FRAMES CASE   (CASE: six | chain | estop | frames)
+# usage: soc_e2e.sh HEXSTEP SOC_SIM SOC_FRAMES CASE   (CASE: six | chain | estop | frames | reduced;
+#   reduced takes the SoC in the iCEBreaker configuration, hexstep-soc-sim-reduced)
 set -euo pipefail
 H=$1 SIM=$2 FRAMES=$3 CASE=$4
 here=$(cd "$(dirname "$0")" && pwd)
@@ -86,6 +87,41 @@ case $CASE in
     last=$(awk -F, 'NR > 1 { if (prev != "") d = $3 - prev; prev = $3 } END { print d }' "$w/soc.csv")
     [ "$last" -gt 128 ] || fail "last STEP interval $last cycles: STOP did not decelerate"
     echo "ok: no STEP edge from bad frames; STOP: $n steps, last interval $last cycles (cruise 64)"
+    ;;
+  reduced)
+    # The SoC in the iCEBreaker build's configuration (hexstep-soc-sim-reduced: one axis,
+    # SPEED_W 24, ACC_W 12, STEP_W 16, DFRAC_W 8, PULSE_W 8, POS_W 16) at its 12 MHz clock:
+    # 1. a job planned for those widths runs and its STEP/DIR edges equal the model's at the
+    #    same widths (and the positions send prints);
+    # 2. the six-axis job is refused before anything is loaded: axis 1 is not on the board;
+    # 3. a one-axis job planned for the default widths is refused, naming the widths.
+    # Each refusal: exit 7, nothing on stdout, no STEP edge.
+    wid=SPEED_W=24,ACC_W=12,STEP_W=16,DFRAC_W=8,PULSE_W=8,POS_W=16
+    "$H" plan --axis 0 --steps 1500 --max-speed 1000000 --accel 1e9 --decel 5e8 --start-speed 20000 \
+      --step-high 2 --step-low 2 --clock-hz 12000000 --widths $wid --format job --out "$w/a0.json"
+    "$H" plan --axis 0 --steps -700 --max-speed 600000 --accel 2e9 --clock-hz 12000000 --widths $wid \
+      --step-high 2 --step-low 2 --format job --out "$w/a1.json"
+    python3 "$here/merge_jobs.py" "$w/a0.json" "$w/a1.json" > "$w/job.json"
+    grep -q '"SPEED_W": 24' "$w/job.json" || fail "the planned job does not record its widths"
+    run_job "$w/job.json"
+    refused() {  # JOB MESSAGE
+      set +e
+      "$SIM" --job "$1" --csv "$w/soc.csv" --max-cycles 40000000 -- \
+        "$H" send "$1" --port '{port}' > "$w/send.out" 2> "$w/send.err"
+      local rc=$?
+      set -e
+      cat "$w/send.err"
+      [ $rc -eq 7 ] || fail "send exit status $rc, expected 7"
+      grep -qF "$2" "$w/send.err" || fail "send did not say: $2"
+      [ ! -s "$w/send.out" ] || fail "send printed positions for a refused job"
+      [ "$(wc -l < "$w/soc.csv")" -eq 1 ] || fail "STEP edges from a refused job"
+    }
+    "$H" plan --job "$here/six_axis_request.json" --format job --out "$w/six.json"
+    refused "$w/six.json" "the job moves axis 1, the board has 1 axis (0)"
+    "$H" plan --axis 0 --steps 300 --max-speed 20000 --accel 400000 --clock-hz 12000000 --format job \
+      --out "$w/default.json"
+    refused "$w/default.json" "the board's core has SPEED_W 24, ACC_W 12, STEP_W 16, DFRAC_W 8, PULSE_W 8"
+    echo "ok: reduced-width job equal to the model; six-axis and default-width jobs refused before loading"
     ;;
   *) fail "unknown case $CASE" ;;
 esac

@@ -159,6 +159,12 @@ int main(int argc, char** argv) {
   check(r.got && r.status == HXP_OK && r.cmd == (HXP_HELLO | HXP_REPLY) && r.seq == 1 && r.data.size() == 13 &&
             r.data[0] == HXP_VERSION && r.data[1] == 6,
         "HELLO: version 1, six axes");
+  // INFO: the default core's widths (rtl/hexstep_top.v parameters: SPEED_W 64, ACC_W 44,
+  // STEP_W 32, DFRAC_W 32, PULSE_W 12), counted by the firmware from the writable bits.
+  r = transact(frame(1, HXP_INFO, {}));
+  check(r.got && r.status == HXP_OK && r.data.size() + 1 == HXP_INFO_REPLY_LEN && r.data[0] == 64 &&
+            r.data[1] == 44 && r.data[2] == 32 && r.data[3] == 32 && r.data[4] == 12,
+        "INFO: SPEED_W 64, ACC_W 44, STEP_W 32, DFRAC_W 32, PULSE_W 12");
 
   // Corrupted: one payload bit of a valid MOVE flipped (CRC no longer matches).
   std::vector<uint8_t> f = frame(2, HXP_MOVE, move_payload(1, 0));

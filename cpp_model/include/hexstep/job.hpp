@@ -20,6 +20,9 @@ struct AxisJob {
 
 struct Job {
   uint64_t clock_hz = kDefaultClockHz;
+  // The core build the registers are meant for (units: 2^-SPEED_W step per cycle, ...): a
+  // board build may have narrower registers than the default (synth/targets.json).
+  Widths widths{};
   std::array<AxisJob, kNumAxes> axes{};
 };
 

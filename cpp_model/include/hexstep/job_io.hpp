@@ -16,13 +16,30 @@ class JobError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Parses and checks a job file: format and version, required and unknown fields, types, every
-// value against its register width in w, unique axis indices 0..5, and every move with
-// validate_move() so that the core would accept it. Throws JobError.
+// Parses and checks a job file: format and version, required and unknown fields, types, the
+// core widths (the file's "widths" object; w for a file without one), every value against its
+// register width, unique axis indices 0..5, and every move with validate_move() so that the
+// core would accept it. Throws JobError.
 Job parse_job(const std::string& text, const Widths& w = Widths{});
 
+// The names of the widths as RTL parameters and job-file keys, in this order: SPEED_W, ACC_W,
+// STEP_W, DFRAC_W, PULSE_W, POS_W, OWE_W.
+constexpr unsigned kNumWidths = 7;
+extern const char* const kWidthNames[kNumWidths];
+unsigned& width_ref(Widths& w, unsigned i);
+unsigned width_of(const Widths& w, unsigned i);
+// The accepted range of width i given the others (ACC_W and DFRAC_W depend on SPEED_W).
+void width_range(const Widths& w, unsigned i, unsigned& lo, unsigned& hi);
+// Empty if every width is within its range (the RTL's parameter ranges, rtl/hexstep_axis.v),
+// else "NAME: must be an integer in [lo, hi], got v" for the first that is not.
+std::string widths_error(const Widths& w);
+// "SPEED_W 24, ACC_W 12, ..." (all seven).
+std::string widths_text(const Widths& w);
+bool same_widths(const Widths& a, const Widths& b);
+
 // The canonical JSON of a job (two-space indent, fields in the documented order, a trailing
-// newline). Axes with no moves and the default pulse configuration are left out.
+// newline). Axes with no moves and the default pulse configuration are left out, and so are
+// default widths.
 // parse_job(write_job(j)) equals j for every job that parse_job accepts.
 std::string write_job(const Job& job);
 
