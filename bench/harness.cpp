@@ -5,7 +5,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "hexstep/job.hpp"
+#include "hexstep/axis.hpp"
+#include "hexstep/axis_run.hpp"
 
 namespace hexstep::bench {
 
@@ -59,16 +60,21 @@ Suite make_suite(const SuiteOptions& o) {
   } clocks[] = {{1e8, o.random_100, o.lines_100}, {4.8e7, o.random_48, o.lines_48}, {1.2e7, o.random_12, o.lines_12}};
   for (const auto& c : clocks) {
     if (o.directed) {
-      // Range ends of the issue (and the three moves of the plots at 100 MHz).
+      // Range ends of the issue (and the three moves of the plots at 100 MHz), within what the
+      // registers hold at this clock: speeds below one step per tick (f / 32; 3.125e6 steps/s
+      // at 100 MHz) and accelerations up to 2^-16 step/tick^2 (ACC_W 48; 1.49e8 steps/s^2 at
+      // 100 MHz, 2.1e6 at 12 MHz).
+      const real vtop = std::min<real>(5e6, 0.99L * max_speed(c.f));
+      const real atop = std::min<real>(1e8, 0.99L * max_accel(c.f));
       struct D {
         uint64_t N;
         real vmax, a, d, vs;
       };
       std::vector<D> dir = {
-          {1, 5e6, 1e8, 1e8, 0},            {10000000, 5e6, 1e8, 1e8, 0},
-          {10000000, 5e6, 1e8, 2.5e7, 5e4}, {3, 1, 10, 10, 1},
-          {2000, 100, 10, 10, 0},           {400, 5e6, 10, 40, 1},
-          {100000, 5e6, 2.5e7, 1e8, 5e4},   {2, 5e6, 1e8, 1e8, 0},
+          {1, vtop, atop, atop, 0},              {10000000, vtop, atop, atop, 0},
+          {10000000, vtop, atop, atop / 4, 5e4}, {3, 1, 10, 10, 1},
+          {2000, 100, 10, 10, 0},                {400, vtop, 10, 40, 1},
+          {100000, vtop, atop / 4, atop, 5e4},   {2, vtop, atop, atop, 0},
       };
       if (c.f == 1e8) {
         dir.push_back({400, 2000, 20000, 20000, 0});   // plot 1: trapezoid from rest
@@ -201,6 +207,20 @@ real ideal_check_ratio(const plan::PhasePlan& p, uint64_t i, real f) {
   return diff / allow;
 }
 
+uint64_t tick_sim(const AxisMove& m, unsigned axis, const PulseConfig& pc, const Widths& w, const RiseFn& on_rise,
+                  uint64_t max_cycles) {
+  AxisRunOptions o;
+  o.axis = axis;
+  o.pulse = pc;
+  o.widths = w;
+  o.max_cycles = max_cycles;
+  o.keep_rises = false;
+  uint64_t rises = 0;
+  o.on_rise = [&](uint32_t, uint64_t cycle) { on_rise(++rises, cycle); };
+  run_axis(m, o);
+  return rises;
+}
+
 const std::vector<std::string>& algorithm_names() {
   static const std::vector<std::string> n = {"hexstep", "hexstep_regs", "avr446", "stoychitch", "spt_10khz", "dda_1khz"};
   return n;
@@ -279,9 +299,6 @@ MoveResult run_single(const SuiteMove& sm, std::vector<Trace>* traces) {
   res.id = sm.id;
   res.algo.resize(algorithm_names().size());
   const real f = sm.clock_hz;
-  Job j;
-  j.clock_hz = static_cast<uint64_t>(std::llround(f));
-  j.axes[0].moves.push_back(sm.enc.regs);
   MetricAcc<plan::PhasePlan> acc_plan(sm.plan, sm.plan.steps, sm.plan.duration, f);
   MetricAcc<IdealProfile> acc_regs(sm.enc.ideal, sm.plan.steps, sm.enc.ideal.duration(), f);
   Trace* tr = nullptr;
@@ -289,54 +306,38 @@ MoveResult run_single(const SuiteMove& sm, std::vector<Trace>* traces) {
     traces->push_back(Trace{"hexstep", {}});
     tr = &traces->back();
   }
-  CoreModel model;
-  RunOptions o;
-  o.event_mode = true;
-  const RunResult rr = run_job(model, j, [&](const StepEvent& ev) {
-    const real t = (static_cast<real>(ev.cycle) - kStepLatency) / f;
-    acc_plan.pulse(ev.step, t);
-    acc_regs.pulse(ev.step, t);
+  // The rising edge lies kStepLatency cycles after the step's instant (ARCHITECTURE.md).
+  const uint64_t rises = tick_sim(sm.enc.regs, 0, PulseConfig{}, Widths{}, [&](uint64_t i, uint64_t cycle) {
+    const real t = (static_cast<real>(cycle) - kStepLatency) / f;
+    acc_plan.pulse(i, t);
+    acc_regs.pulse(i, t);
     if (tr) tr->t.push_back(t);
-  }, o);
-  res.algo[0] = acc_plan.finish(!rr.timed_out);
-  res.algo[1] = acc_regs.finish(!rr.timed_out);
+  });
+  res.algo[0] = acc_plan.finish(rises == sm.plan.steps);
+  res.algo[1] = acc_regs.finish(rises == sm.plan.steps);
   run_comparisons(sm, res.algo, traces);
   return res;
 }
 
 std::vector<MoveResult> run_line(const std::vector<const SuiteMove*>& axes) {
+  // All axes of a line start on one START and share its time zero, and no axis affects another's
+  // motion: each runs on its own axis of the same frame schedule.
   std::vector<MoveResult> res(axes.size());
-  if (axes.empty()) return res;
-  const real f = axes[0]->clock_hz;
-  Job j;
-  j.clock_hz = static_cast<uint64_t>(std::llround(f));
-  std::vector<MetricAcc<plan::PhasePlan>> ap;
-  std::vector<MetricAcc<IdealProfile>> ar;
-  int slot[kNumAxes];
-  for (int& s : slot) s = -1;
   for (size_t i = 0; i < axes.size(); ++i) {
     const SuiteMove& m = *axes[i];
-    j.axes[m.axis].moves.push_back(m.enc.regs);
-    slot[m.axis] = static_cast<int>(i);
-    ap.emplace_back(m.plan, m.plan.steps, m.plan.duration, f);
-    ar.emplace_back(m.enc.ideal, m.plan.steps, m.enc.ideal.duration(), f);
-  }
-  CoreModel model;
-  RunOptions o;
-  o.event_mode = true;
-  const RunResult rr = run_job(model, j, [&](const StepEvent& ev) {
-    const int s = slot[ev.axis];
-    if (s < 0) return;
-    const real t = (static_cast<real>(ev.cycle) - kStepLatency) / f;
-    ap[s].pulse(ev.step, t);
-    ar[s].pulse(ev.step, t);
-  }, o);
-  for (size_t i = 0; i < axes.size(); ++i) {
-    res[i].id = axes[i]->id;
+    const real f = m.clock_hz;
+    MetricAcc<plan::PhasePlan> ap(m.plan, m.plan.steps, m.plan.duration, f);
+    MetricAcc<IdealProfile> ar(m.enc.ideal, m.plan.steps, m.enc.ideal.duration(), f);
+    const uint64_t rises = tick_sim(m.enc.regs, m.axis, PulseConfig{}, Widths{}, [&](uint64_t k, uint64_t cycle) {
+      const real t = (static_cast<real>(cycle) - kStepLatency) / f;
+      ap.pulse(k, t);
+      ar.pulse(k, t);
+    });
+    res[i].id = m.id;
     res[i].algo.resize(algorithm_names().size());
-    res[i].algo[0] = ap[i].finish(!rr.timed_out);
-    res[i].algo[1] = ar[i].finish(!rr.timed_out);
-    run_comparisons(*axes[i], res[i].algo, nullptr);
+    res[i].algo[0] = ap.finish(rises == m.plan.steps);
+    res[i].algo[1] = ar.finish(rises == m.plan.steps);
+    run_comparisons(m, res[i].algo, nullptr);
   }
   return res;
 }

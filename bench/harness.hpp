@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -119,6 +120,18 @@ class MetricAcc {
   real t_prev_ = 0, ti_prev_ = 0;
   Metrics m_;
 };
+
+// ---- hexstep's step instants ----------------------------------------------------------------
+// One axis of the frame engine running one move: the model library's frame runner
+// (hexstep/axis_run.hpp: AxisGen once per frame in the axis's slot, its own PulseStage, quiet
+// stretches jumped over in closed form), which is TopModel's schedule for one axis without the
+// bus and the other axes; bench_check checks it equal to run_job on TopModel.
+// on_rise(step, cycle): step i (1-based) has its first STEP-high cycle `cycle` cycles after the
+// move's time zero F0 (the first cycle of the frame of its first tick). Returns the number of
+// rising edges; stops after max_cycles.
+using RiseFn = std::function<void(uint64_t step, uint64_t cycle)>;
+uint64_t tick_sim(const AxisMove& m, unsigned axis, const PulseConfig& pc, const Widths& w, const RiseFn& on_rise,
+                  uint64_t max_cycles = 1ull << 50);
 
 // Algorithms in report order. "hexstep_regs" is hexstep measured against the profile its
 // registers describe (the core issue's reference) rather than the planner's.

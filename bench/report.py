@@ -13,7 +13,7 @@ import subprocess
 import sys
 
 ALGO_TITLES = {
-    "hexstep": "hexstep (golden model = RTL)",
+    "hexstep": "hexstep (frame engine; golden model = RTL)",
     "hexstep_regs": "hexstep vs its register profile",
     "avr446": "AVR446 / Austin (integer timer)",
     "stoychitch": "Stoychitch time-per-step (eq. 11-14)",
@@ -171,15 +171,21 @@ def findings(acc, overall):
     w = max(moves, key=lambda m: m["algo"]["hexstep"]["max_excess"])
     h, r = w["algo"]["hexstep"], w["algo"]["hexstep_regs"]
     f = w["clock_hz"]
-    lsb = f * f / 2.0 ** 64  # one acceleration register LSB in steps/s^2
+    ft = f / 32.0  # the registers count ticks of 32 clock cycles (one frame)
+    lsb = ft * ft / 2.0 ** 64  # one acceleration register LSB in steps/s^2
     rel = max(lsb / w["accel"] if w["accel"] else 0, lsb / w["decel"] if w["decel"] else 0)
-    return (f"hexstep's worst excess against the planner's profile is on move {w['id']} ({w['kind']}, "
+    text = (f"hexstep's worst excess against the planner's profile is on move {w['id']} ({w['kind']}, "
             f"{w['steps']} steps, {w['profile']}, a = {fmt(w['accel'])}, d = {fmt(w['decel'])} steps/s^2, "
             f"peak {fmt(w['v_peak'])} steps/s, {f / 1e6:g} MHz): {fmt(h['max_excess'])} step "
             f"(error/allowance {fmt(h['max_ratio'])}); the same pulses against the profile its registers describe: "
-            f"{fmt(r['max_excess'])} step (error/allowance {fmt(r['max_ratio'])}). One acceleration LSB at this clock is "
-            f"f^2/2^64 = {fmt(lsb)} steps/s^2, up to {fmt(rel)} of this move's ramp rates; the registers round "
-            f"down, and over {w['steps']} steps that relative difference becomes the position difference above.\n")
+            f"{fmt(r['max_excess'])} step (error/allowance {fmt(r['max_ratio'])}). ")
+    if r["max_ratio"] > 1:
+        # Outside the core's own allowance: not a matter of the register values.
+        return text + ("The pulses are late against the registers' own profile too, so this is the core's "
+                       "output timing, not the rounding of the registers.\n")
+    return text + (f"One acceleration LSB at this clock is (f/32)^2/2^64 = {fmt(lsb)} steps/s^2, up to {fmt(rel)} "
+                   f"of this move's ramp rates; the registers round down, and over {w['steps']} steps that relative "
+                   f"difference becomes the position difference above.\n")
 
 
 def md_table(header, rows):

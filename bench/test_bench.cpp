@@ -6,9 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "harness.hpp"
+#include "hexstep/job.hpp"
+#include "hexstep/top_sim.hpp"
 
 using namespace hexstep;
 using namespace hexstep::bench;
@@ -180,6 +184,133 @@ TEST(BenchDda, ConstantSpeedByHand) {
   EXPECT_TRUE(r.finished);
   ASSERT_EQ(got.size(), 20u);
   for (size_t k = 0; k < got.size(); ++k) EXPECT_EQ(std::llround(got[k].t * 1e6L), 1000 * static_cast<long>(k + 1));
+}
+
+// ---- the tick-level simulation of hexstep against the cycle-exact model ----
+
+using Rises = std::vector<std::pair<uint64_t, uint64_t>>;  // (step, first high cycle after F0)
+
+// run_job on TopModel through the bus, as `hexstep simulate` does: every rising edge of every
+// axis, its cycle counted from the time zero of the axis's move (TopModel::move_t0).
+std::map<unsigned, Rises> model_rises(const Job& job, bool event_mode) {
+  ModelSim sim;
+  std::map<unsigned, Rises> out;
+  RunOptions o;
+  o.event_mode = event_mode;
+  const RunResult r = run_job(sim, job, [&](const StepEvent& ev) {
+    out[ev.axis].push_back({ev.step, sim.model().cycle() - sim.model().move_t0(ev.axis)});
+  }, o);
+  EXPECT_FALSE(r.timed_out);
+  return out;
+}
+
+Rises fast_rises(const AxisMove& m, unsigned axis, const PulseConfig& pc) {
+  Rises v;
+  tick_sim(m, axis, pc, Widths{}, [&](uint64_t i, uint64_t c) { v.push_back({i, c}); });
+  return v;
+}
+
+// One job of single moves (one per axis), compared axis by axis, edge by edge.
+void expect_same_rises(const Job& job, bool event_mode, const std::string& what) {
+  const std::map<unsigned, Rises> ref = model_rises(job, event_mode);
+  for (unsigned k = 0; k < kNumAxes; ++k) {
+    if (job.axes[k].moves.empty()) continue;
+    ASSERT_EQ(job.axes[k].moves.size(), 1u);
+    const Rises fast = fast_rises(job.axes[k].moves[0], k, job.axes[k].pulse);
+    const auto it = ref.find(k);
+    const Rises model = it == ref.end() ? Rises{} : it->second;
+    ASSERT_EQ(fast.size(), model.size()) << what << ", axis " << k;
+    EXPECT_EQ(fast.size(), job.axes[k].moves[0].steps) << what << ", axis " << k;
+    for (size_t i = 0; i < fast.size(); ++i)
+      ASSERT_EQ(fast[i], model[i]) << what << ", axis " << k << ", rise " << i;
+  }
+}
+
+EncodedMove planned(uint64_t N, real vmax, real a, real d, real vs, real f = 1e8) {
+  return plan::encode(make_plan(N, vmax, a, d, vs), f);
+}
+
+// Moves the accuracy suite relies on: slow ones (quiet ticks skipped), ones near one step per
+// tick on every axis (where the output stage can hold the generator back), a pulse timing
+// slower than the steps (it does hold it back), and both directions with DIR timing.
+TEST(BenchTickSim, EqualsTopModelOnDirectedMoves) {
+  const real vtop = 0.99L * max_speed(1e8);  // just below one step per tick
+  {
+    Job j;  // six axes at the top speed, one START
+    for (unsigned k = 0; k < kNumAxes; ++k)
+      j.axes[k].moves.push_back(planned(1500 + 37 * k, vtop, 1.4e8, 1.4e8, vtop / (k + 2)).regs);
+    expect_same_rises(j, true, "six axes near one step per tick");
+  }
+  {
+    Job j;
+    j.axes[0].moves.push_back(planned(2000, vtop, 1e8, 1e8, vtop).regs);  // constant
+    j.axes[3].moves.push_back(planned(300, 2e6, 1e8, 2.5e7, 0).regs);
+    j.axes[5].moves.push_back(planned(40, 150, 300, 600, 0).regs);  // slow: mostly quiet ticks
+    expect_same_rises(j, true, "constant, fast ramp, slow");
+    j.axes[5].moves.clear();  // 0.5 s of motion: too long for cycle mode here
+    expect_same_rises(j, false, "constant and fast ramp in cycle mode");
+  }
+  {
+    Job j;  // pulses of 20 + 20 cycles: at most 2.5e6 steps/s, slower than the move's 3e6
+    for (unsigned k : {0u, 2u, 4u}) {
+      EncodedMove e = planned(700, 3e6, 1e8, 1e8, 2e6);
+      e.regs.dir = k != 2;
+      j.axes[k].moves.push_back(e.regs);
+      j.axes[k].pulse = PulseConfig{20, 20, 7, 5, k == 4, k == 2};
+    }
+    expect_same_rises(j, true, "output stage slower than the steps, DIR timing, polarity");
+  }
+}
+
+// The suite's own moves (single and lines), as far as the cycle-exact model runs them quickly.
+TEST(BenchTickSim, EqualsTopModelOnSuiteMoves) {
+  SuiteOptions o;
+  o.seed = 20261124;
+  o.random_100 = 60;
+  o.random_48 = 30;
+  o.random_12 = 30;
+  o.lines_100 = 2;
+  o.lines_48 = 1;
+  o.lines_12 = 1;
+  o.directed = false;
+  o.max_duration_s = 2;
+  const Suite s = make_suite(o);
+  unsigned compared = 0;
+  std::map<int, Job> lines;
+  for (const SuiteMove& m : s.moves) {
+    if (m.plan.steps > 4000) continue;
+    if (m.kind == "line") {
+      lines[m.line].axes[m.axis].moves.push_back(m.enc.regs);
+      continue;
+    }
+    Job j;
+    j.axes[0].moves.push_back(m.enc.regs);
+    expect_same_rises(j, true, "suite move " + std::to_string(m.id));
+    ++compared;
+  }
+  for (const auto& [id, j] : lines) {
+    expect_same_rises(j, true, "suite line " + std::to_string(id));
+    ++compared;
+  }
+  EXPECT_GE(compared, 40u);
+}
+
+// The range end of the speeds at 100 MHz: a trapezoid to 0.99 step per tick and back to rest on
+// every axis, against the core's own guarantee (the profile its registers describe; docs/
+// ARCHITECTURE.md, "Accuracy": every step within 2 cycles + 0.001 step / v_ideal).
+TEST(BenchSlice, TopSpeedWithinTheRegisterAllowanceOnEveryAxis) {
+  const plan::PhasePlan p = make_plan(200000, 0.99L * max_speed(1e8), 0.99e8, 0.99e8, 0);  // 48,000 steps up
+  const EncodedMove e = plan::encode(p, 1e8);
+  for (unsigned k = 0; k < kNumAxes; ++k) {
+    MetricAcc<IdealProfile> acc(e.ideal, p.steps, e.ideal.duration(), 1e8);
+    const uint64_t rises = tick_sim(e.regs, k, PulseConfig{}, Widths{}, [&](uint64_t i, uint64_t c) {
+      acc.pulse(i, (static_cast<real>(c) - kStepLatency) / 1e8L);
+    });
+    const Metrics m = acc.finish();
+    EXPECT_EQ(rises, p.steps) << "axis " << k;
+    EXPECT_LE(m.max_ratio, 1.0L) << "axis " << k << ": step " << m.worst_step << " is "
+                                 << static_cast<double>(m.max_err * 1e8L) << " cycles from its ideal instant";
+  }
 }
 
 // A seeded slice of the suite (the same generator as `make bench`, fewer moves): hexstep ends on

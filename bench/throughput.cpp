@@ -7,10 +7,11 @@
 #include <random>
 #include <vector>
 
-#include "hexstep/core.hpp"
+#include "hexstep/bus.hpp"
 #include "hexstep/job.hpp"
 #include "hexstep/planner.hpp"
-#include "rtl_core.hpp"
+#include "hexstep/top_sim.hpp"
+#include "rtl_top.hpp"
 
 using namespace hexstep;
 
@@ -33,21 +34,30 @@ Job slow_six_axis_job(uint64_t steps) {
 }
 
 // Six axes moving fast (1e5..6e5 steps/s) for the co-simulation: many steps per cycle budget.
-CoreInputs fast_six_axis_inputs() {
-  CoreInputs in;
-  for (unsigned i = 0; i < kNumAxes; ++i) {
-    in.move[i] = plan_move(4000000, 1e5 * (i + 1), 1e9 / 16).regs;
-    in.pulse[i] = PulseConfig{};
-  }
-  in.start_mask = (1u << kNumAxes) - 1;
-  return in;
+std::vector<AxisMove> fast_six_axis_moves() {
+  std::vector<AxisMove> v;
+  for (unsigned i = 0; i < kNumAxes; ++i) v.push_back(plan_move(4000000, 1e5 * (i + 1), 1e9 / 16).regs);
+  return v;
+}
+
+// Reset, one move per axis pushed through the bus, one START: the block is then running.
+void start_fast_six_axis(Bus& bus, const std::vector<AxisMove>& moves) {
+  bus.reset();
+  for (unsigned i = 0; i < kNumAxes; ++i) push_move(bus, i, moves[i]);
+  bus.write(regs::START, (1u << kNumAxes) - 1);
+}
+
+bool all_busy(Bus& bus) {
+  for (unsigned i = 0; i < kNumAxes; ++i)
+    if (!(bus.read(ax_reg(i, regs::axis::STATUS)) & regs::axis::STATUS_BUSY_MASK)) return false;
+  return true;
 }
 
 void BM_ModelCycleMode(benchmark::State& st) {
   const Job j = slow_six_axis_job(30);
   uint64_t cycles = 0, steps = 0;
   for (auto _ : st) {
-    CoreModel m;
+    ModelSim m;
     RunOptions o;
     o.event_mode = false;
     uint64_t n = 0;
@@ -63,7 +73,7 @@ void BM_ModelEventMode(benchmark::State& st) {
   const Job j = slow_six_axis_job(30);  // the same job as BM_ModelCycleMode
   uint64_t steps = 0;
   for (auto _ : st) {
-    CoreModel m;
+    ModelSim m;
     RunOptions o;
     o.event_mode = true;
     uint64_t n = 0;
@@ -79,7 +89,7 @@ void BM_ModelEventModeLongSlow(benchmark::State& st) {
   j.axes[0].moves.push_back(plan_move(20000, 900, 3000).regs);
   uint64_t steps = 0;
   for (auto _ : st) {
-    CoreModel m;
+    ModelSim m;
     RunOptions o;
     o.event_mode = true;
     uint64_t n = 0;
@@ -91,42 +101,41 @@ void BM_ModelEventModeLongSlow(benchmark::State& st) {
 
 constexpr uint64_t kCosimCycles = 1000000;
 
+// The cycles counted are those with the six axes moving (after the setup through the bus).
 void BM_CosimRtl(benchmark::State& st) {
-  RtlCore rtl;
-  const CoreInputs start = fast_six_axis_inputs();
-  CoreInputs run = start;
-  run.start_mask = 0;
+  RtlTop rtl;
+  const std::vector<AxisMove> moves = fast_six_axis_moves();
   uint64_t cycles = 0;
   for (auto _ : st) {
-    rtl.reset();
-    rtl.tick(start);
-    for (uint64_t c = 1; c < kCosimCycles; ++c) rtl.tick(run);
-    for (unsigned i = 0; i < kNumAxes; ++i)
-      if (!rtl.out(i).busy) st.SkipWithError("an axis stopped moving before the end of the run");
+    st.PauseTiming();
+    Bus bus(rtl);
+    start_fast_six_axis(bus, moves);
+    st.ResumeTiming();
+    bus.idle(kCosimCycles);
+    st.PauseTiming();
+    if (!all_busy(bus)) st.SkipWithError("an axis stopped moving before the end of the run");
+    st.ResumeTiming();
     cycles += kCosimCycles;
   }
   st.counters["cycles_per_s"] = benchmark::Counter(static_cast<double>(cycles), benchmark::Counter::kIsRate);
 }
 
 void BM_CosimRtlWithModel(benchmark::State& st) {
-  RtlCore rtl;
-  CoreModel model;
-  const CoreInputs start = fast_six_axis_inputs();
-  CoreInputs run = start;
-  run.start_mask = 0;
+  RtlTop rtl;
+  ModelSim model;
+  Lockstep pair(model, rtl);
+  const std::vector<AxisMove> moves = fast_six_axis_moves();
   uint64_t cycles = 0;
   for (auto _ : st) {
-    rtl.reset();
-    model.reset();
-    rtl.tick(start);
-    model.tick(start);
-    bool same = true;
-    for (uint64_t c = 1; c < kCosimCycles && same; ++c) {
-      rtl.tick(run);
-      model.tick(run);
-      for (unsigned i = 0; i < kNumAxes; ++i) same = same && rtl.out(i) == model.out(i);
-    }
-    if (!same) st.SkipWithError("RTL and model differ");
+    st.PauseTiming();
+    Bus bus(pair);
+    start_fast_six_axis(bus, moves);
+    st.ResumeTiming();
+    bus.idle(kCosimCycles);
+    st.PauseTiming();
+    if (pair.mismatches() != 0) st.SkipWithError(("RTL and model differ: " + pair.report()).c_str());
+    else if (!all_busy(bus)) st.SkipWithError("an axis stopped moving before the end of the run");
+    st.ResumeTiming();
     cycles += kCosimCycles;
   }
   st.counters["cycles_per_s"] = benchmark::Counter(static_cast<double>(cycles), benchmark::Counter::kIsRate);
@@ -145,8 +154,8 @@ std::vector<PlanCase> plan_cases() {
   for (int k = 0; k < 256; ++k) {
     PlanCase c;
     c.n = static_cast<uint64_t>(logu(1, 1e6));
-    c.lim.max_speed = logu(10, 5e6);
-    c.lim.accel = logu(100, 1e8);
+    c.lim.max_speed = logu(10, 3e6);  // below one step per tick at 100 MHz (3.125e6 steps/s)
+    c.lim.accel = logu(100, 3.7e7);  // decel up to 4x: within ACC_W 48 at 100 MHz (1.49e8)
     c.lim.decel = c.lim.accel / logu(0.25, 4);
     v.push_back(c);
   }

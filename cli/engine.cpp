@@ -5,7 +5,7 @@
 #include "hexstep/job_io.hpp"
 
 #ifdef HEXSTEP_HAVE_RTL
-#include "rtl_core.hpp"
+#include "rtl_top.hpp"
 #endif
 
 namespace hexstep::cli {
@@ -20,7 +20,7 @@ bool rtl_available() {
 
 Widths engine_widths(Engine e) {
 #ifdef HEXSTEP_HAVE_RTL
-  if (e == Engine::kRtl) return RtlCore::rtl_widths();
+  if (e == Engine::kRtl) return RtlTop::rtl_widths();
 #else
   (void)e;
 #endif
@@ -36,19 +36,19 @@ void check_engine(Engine e, const std::string& trace_path) {
                    "(configure with -DHEXSTEP_RTL=ON and Verilator installed)");
 }
 
-std::unique_ptr<CoreSim> make_engine(Engine e, const std::string& trace_path, const Widths& w) {
+std::unique_ptr<TopSim> make_engine(Engine e, const std::string& trace_path, const Widths& w) {
   check_engine(e, trace_path);
 #ifdef HEXSTEP_HAVE_RTL
   if (e == Engine::kRtl) {
-    const Widths rw = RtlCore::rtl_widths();
+    const Widths rw = RtlTop::rtl_widths();
     if (!same_widths(w, rw))
       throw CliError(kExitUsage, "widths: the job is for a core with " + widths_text(w) +
                                      "; the Verilated RTL of --engine rtl is built with " +
                                      widths_text(rw) + " (use --engine model)");
-    return std::make_unique<RtlCore>(trace_path);
+    return std::make_unique<RtlTop>(trace_path);
   }
 #endif
-  return std::make_unique<CoreModel>(w);
+  return std::make_unique<ModelSim>(kNumAxes, w);
 }
 
 }  // namespace hexstep::cli

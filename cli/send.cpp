@@ -301,7 +301,7 @@ CLI::App* add_send(CLI::App& app, SendOptions& o) {
   CLI::App* sub = app.add_subcommand(
       "send",
       "Stream a job to a board running the hexstep SoC firmware over a serial port (protocol: "
-      "docs/PROTOCOL.md), start all its axes on one strobe, wait until they finish and print the "
+      "docs/PROTOCOL.md), start all its axes with one START, wait until they finish and print the "
       "final positions.");
   sub->add_option("job", o.job, "Job file (docs/FORMATS.md), e.g. from `hexstep plan --format job`; '-' reads stdin")
       ->required()
@@ -369,14 +369,15 @@ int run_send(const SendOptions& o) {
                                      std::to_string(board_axes) + (board_axes == 1 ? " axis (0)" : " axes (0.." +
                                      std::to_string(board_axes - 1) + ")") + "; nothing was sent");
   const unsigned depth = hello.data[2];
-  // The widths of the board's core: the job's registers are in its units (2^-SPEED_W step per
-  // cycle, ...), so a job planned for other widths would run at other speeds, not be refused.
+  // The widths of the board's core: a job's values must fit its registers (ACC_W, STEP_W,
+  // DFRAC_W, PULSE_W), or the board would truncate them; SPEED_W is 64 in every build, so a
+  // reply with another value is not a hexstep frame-engine core.
   const Reply info = link.request(HXP_INFO, {});
   expect_ok(info, "INFO");
   if (info.data.size() + 1 != HXP_INFO_REPLY_LEN)
     throw CliError(kExitBoard, "board: INFO: reply of " + std::to_string(info.data.size() + 1) +
                                    " bytes, expected " + std::to_string(HXP_INFO_REPLY_LEN));
-  Widths board_w = job.widths;  // POS_W and OWE_W are not reported (not probeable over the bus)
+  Widths board_w = job.widths;  // POS_W is not reported (INFO keeps its five-byte format)
   board_w.speed_frac = info.data[0];
   board_w.acc = info.data[1];
   board_w.steps = info.data[2];

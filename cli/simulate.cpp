@@ -22,9 +22,10 @@ CLI::App* add_simulate(CLI::App& app, SimulateOptions& o) {
       ->required()
       ->option_text("JOB.json");
   sub->add_option("--engine", o.engine,
-                  "Simulator: 'model' = the cycle-exact C++ golden model, 'rtl' = the Verilated "
-                  "rtl/hexstep_core.v (only if this hexstep was built with -DHEXSTEP_RTL=ON). "
-                  "Both give identical output for a valid job. Default: model")
+                  "Simulator of the whole block (rtl/hexstep_top.v): 'model' = the cycle-exact C++ "
+                  "golden model, 'rtl' = the Verilated RTL (only if this hexstep was built with "
+                  "-DHEXSTEP_RTL=ON). Both are driven through the same Wishbone job runner and "
+                  "give identical output for a valid job. Default: model")
       ->check(CLI::IsMember({"model", "rtl"}))
       ->option_text("model|rtl");
   sub->add_flag("--event-mode", o.event_mode,
@@ -32,9 +33,10 @@ CLI::App* add_simulate(CLI::App& app, SimulateOptions& o) {
                 "simulating every cycle (much faster for slow moves; same output; the model "
                 "supports it, the rtl engine ignores it)");
   sub->add_option("--max-cycles", o.max_cycles,
-                  "Give up (exit status 4, nothing printed) if the job has not finished after N "
-                  "clock cycles, counted from the first start strobe (at 100 MHz, 10^8 cycles = "
-                  "1 s of machine time). Default: 10000000000 (100 s at 100 MHz)")
+                  "Give up (exit status 4, nothing printed) if the job has not finished (every "
+                  "axis seen at rest by the job runner: the 'run:' length of --summary) within N "
+                  "clock cycles, counted from the START write (at 100 MHz, 10^8 cycles = 1 s of "
+                  "machine time). Default: 10000000000 (100 s at 100 MHz)")
       ->check(CLI::Validator(
           [](std::string& v) -> std::string {
             // Plain decimal only: strtoull would accept "-5" and wrap it around.
@@ -61,7 +63,8 @@ CLI::App* add_simulate(CLI::App& app, SimulateOptions& o) {
       "with step_invert), sorted by cycle, then axis:\n"
       "  axis    axis index, 0..5\n"
       "  step    index of the step within its move, counting from 1\n"
-      "  cycle   clock cycle of that edge; the clock edge of the first start strobe is cycle 0\n"
+      "  cycle   first clock cycle of the pulse, counted from the cycle in which the runner\n"
+      "          writes START (cycle 0), after the pulse configuration and the first moves\n"
       "  time_s  cycle / clock_hz in seconds, in fixed point with as many decimals as the\n"
       "          clock needs to be exact to the cycle (8 at 100 MHz)\n"
       "  dir     1 = positive motion, 0 = negative motion\n"
@@ -125,19 +128,27 @@ int run_simulate(const SimulateOptions& o) {
   } catch (const JobError& e) {
     throw CliError(kExitUsage, name + ": " + e.what());
   }
-  std::unique_ptr<CoreSim> core;
+  std::unique_ptr<TopSim> core;
   try {
     core = make_engine(engine, o.trace, job.widths);
   } catch (const CliError& e) {
     throw CliError(e.code(), name + ": " + e.what());
   }
 
+  for (unsigned k = core->naxes(); k < kNumAxes; ++k)
+    if (!job.axes[k].moves.empty())
+      throw CliError(kExitUsage, name + ": axis " + std::to_string(k) + " has moves; the " + o.engine +
+                                     " core has " + std::to_string(core->naxes()) + " axes (0.." +
+                                     std::to_string(core->naxes() - 1) + ")");
+
   std::vector<StepEvent> events;
   RunOptions ro;
   ro.event_mode = o.event_mode;
   ro.max_cycles = o.max_cycles;
   const RunResult r = run_job(*core, job, [&events](const StepEvent& e) { events.push_back(e); }, ro);
-  if (r.timed_out)
+  // The runner checks its bound between bus transactions, so a run may end a few cycles past
+  // it; the run length it reports is what --max-cycles bounds (docs/FORMATS.md).
+  if (r.timed_out || r.cycles > o.max_cycles)
     throw CliError(kExitTimeout, name + ": the run did not finish within --max-cycles " +
                                      std::to_string(o.max_cycles) + " cycles (" +
                                      format_seconds(o.max_cycles, job.clock_hz) +

@@ -15,7 +15,7 @@
 #define FIELD(val, reg_field) (((val)&reg_field##_bm) >> reg_field##_bp)
 
 #define PULSE_MAX HEXSTEP__AXIS_T__STEP_HIGH__VAL_bm /* 12-bit timing registers */
-#define ACC_HI_MASK HEXSTEP__AXIS_T__WORD12_R__VAL_bm /* ACC_HI/DEC_HI: bits 43:32 */
+#define ACC_HI_MASK HEXSTEP__AXIS_T__WORD16_R__VAL_bm /* ACC_HI/DEC_HI: bits 47:32 */
 
 /* The driver's constants agree with the generated map. */
 typedef char hexstep_chk_naxes[(sizeof(((hexstep_t *)0)->AXIS) / sizeof(((hexstep_t *)0)->AXIS[0]) ==
@@ -68,7 +68,27 @@ hexstep_rc_t hexstep_init(hexstep_dev_t *dev, uintptr_t base, hexstep_read_fn re
   dev->ctx = ctx;
   if (rd(dev, G_OFF(ID)) != HEXSTEP_ID_MAGIC) return HEXSTEP_ERR_NODEV;
   ver = rd(dev, G_OFF(VERSION));
+  /* Another major version has other register units (map 0.x counted clock cycles). */
+  if (FIELD(ver, HEXSTEP__VERSION__MAJOR) != HEXSTEP__VERSION__MAJOR_reset) return HEXSTEP_ERR_NODEV;
   if (FIELD(ver, HEXSTEP__VERSION__NAXES) != HEXSTEP_NUM_AXES) return HEXSTEP_ERR_NODEV;
+  return HEXSTEP_OK;
+}
+
+hexstep_rc_t hexstep_read_info(hexstep_dev_t *dev, hexstep_info_t *info) {
+  uint32_t v, i0, i1;
+  if (!dev || !info) return HEXSTEP_ERR_ARG;
+  v = rd(dev, G_OFF(VERSION));
+  i0 = rd(dev, G_OFF(INFO0));
+  i1 = rd(dev, G_OFF(INFO1));
+  info->naxes = (uint8_t)FIELD(v, HEXSTEP__VERSION__NAXES);
+  info->speed_w = (uint8_t)FIELD(i0, HEXSTEP__INFO0__SPEED_W);
+  info->acc_w = (uint8_t)FIELD(i0, HEXSTEP__INFO0__ACC_W);
+  info->step_w = (uint8_t)FIELD(i0, HEXSTEP__INFO0__STEP_W);
+  info->dfrac_w = (uint8_t)FIELD(i0, HEXSTEP__INFO0__DFRAC_W);
+  info->pulse_w = (uint8_t)FIELD(i1, HEXSTEP__INFO1__PULSE_W);
+  info->pos_w = (uint8_t)FIELD(i1, HEXSTEP__INFO1__POS_W);
+  info->frame_log2 = (uint8_t)FIELD(i1, HEXSTEP__INFO1__FRAME_LOG2);
+  info->slots = (uint8_t)FIELD(i1, HEXSTEP__INFO1__SLOTS);
   return HEXSTEP_OK;
 }
 
@@ -172,7 +192,7 @@ hexstep_rc_t hexstep_start(hexstep_dev_t *dev, uint32_t mask) {
   if (!mask_ok(dev, mask)) return HEXSTEP_ERR_ARG;
   if (estop_latched(dev)) return HEXSTEP_ERR_ESTOP;
   wr(dev, G_OFF(START), mask);
-  /* The start strobe acts on the edge after the write; this read completes after that edge. */
+  /* A bridge may post the write; a read cannot pass it, so STATUS.run is 1 after this one. */
   (void)rd(dev, G_OFF(GSTATUS));
   return HEXSTEP_OK;
 }

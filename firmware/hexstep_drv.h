@@ -17,6 +17,12 @@
  * this one and checks sizes and every field offset, so a plan's table can be passed directly:
  *   hexstep_queue_move(&dev, 0, (const hexstep_move_t *)&hexstep_plan_moves[0]);
  *
+ * Register map v1.0 (the frame engine, docs/ARCHITECTURE.md): speeds and accelerations count
+ * ticks (one tick of every axis per frame of 32 clock cycles); START and STOP act at the next
+ * frame boundary, ABORT on the next edge. Staging and pulse-configuration accesses wait for the
+ * core's memory (a few cycles) and CMD.push is acked only when the move is in the queue (about
+ * 105 cycles): the bus stalls meanwhile, no call needs to poll for it.
+ *
  * Concurrency: the driver keeps no state but the handle; calls on one device must not race
  * (e.g. from an interrupt handler and the main loop) unless the caller serialises them.
  */
@@ -39,8 +45,8 @@ extern "C" {
 typedef enum {
   HEXSTEP_OK = 0,
   HEXSTEP_ERR_ARG = -1,        /* NULL pointer, axis >= 6, mask outside 0x3F, ... */
-  HEXSTEP_ERR_RANGE = -2,      /* a value does not fit its register (acc/dec > 44 bits, pulse > 4095) */
-  HEXSTEP_ERR_NODEV = -3,      /* ID/VERSION do not identify a six-axis hexstep */
+  HEXSTEP_ERR_RANGE = -2,      /* a value does not fit its register (acc/dec > 48 bits, pulse > 4095) */
+  HEXSTEP_ERR_NODEV = -3,      /* ID/VERSION do not identify a six-axis hexstep of map version 1 */
   HEXSTEP_ERR_QUEUE_FULL = -4, /* the axis's 2-deep move queue has no free slot; nothing pushed */
   HEXSTEP_ERR_ESTOP = -5,      /* e-stop latched (pushes and starts are dropped by the hardware) */
   HEXSTEP_ERR_TIMEOUT = -6,    /* hexstep_wait: still busy after max_polls polls */
@@ -68,12 +74,12 @@ typedef struct {
 typedef struct {
   uint32_t steps;     /* exact number of steps */
   uint32_t dir;       /* bit 0: 1 positive direction, 0 negative; bit 1: HEXSTEP_MOVE_JOG */
-  uint64_t v_start;   /* 2^-64 step/cycle */
-  uint64_t v_max;     /* 2^-64 step/cycle */
-  uint64_t v_end;     /* 2^-64 step/cycle */
-  uint64_t acc;       /* 2^-64 step/cycle^2, at most 44 bits */
-  uint64_t dec;       /* 2^-64 step/cycle^2, at most 44 bits */
-  uint64_t v_dec;     /* 2^-64 step/cycle */
+  uint64_t v_start;   /* 2^-64 step/tick */
+  uint64_t v_max;     /* 2^-64 step/tick */
+  uint64_t v_end;     /* 2^-64 step/tick */
+  uint64_t acc;       /* 2^-64 step/tick^2, at most 48 bits */
+  uint64_t dec;       /* 2^-64 step/tick^2, at most 48 bits */
+  uint64_t v_dec;     /* 2^-64 step/tick */
   uint32_t acc_steps; /* steps */
   uint32_t dec_step;  /* steps */
   uint32_t dec_frac;  /* 2^-32 step */
@@ -109,9 +115,27 @@ typedef struct {
   uint8_t free;  /* free queue slots, 0..2 */
 } hexstep_axis_status_t;
 
-/* Fills the handle (read/write may be NULL for MMIO) and checks ID and VERSION.naxes. */
+/* The build of the core (VERSION, INFO0, INFO1): its register widths and frame schedule. A
+ * move's values must fit these widths; the rest of the driver checks the default build's. */
+typedef struct {
+  uint8_t naxes;      /* VERSION.naxes */
+  uint8_t speed_w;    /* speed and position fraction bits (64) */
+  uint8_t acc_w;      /* ACC/DEC bits */
+  uint8_t step_w;     /* STEPS, ACC_STEPS, DEC_STEP bits */
+  uint8_t dfrac_w;    /* DEC_FRAC bits */
+  uint8_t pulse_w;    /* pulse timing bits */
+  uint8_t pos_w;      /* position counter bits */
+  uint8_t frame_log2; /* a tick is 2^frame_log2 clock cycles */
+  uint8_t slots;      /* slots per frame */
+} hexstep_info_t;
+
+/* Fills the handle (read/write may be NULL for MMIO) and checks ID, VERSION.major (1) and
+ * VERSION.naxes (6). */
 hexstep_rc_t hexstep_init(hexstep_dev_t *dev, uintptr_t base, hexstep_read_fn read, hexstep_write_fn write,
                           void *ctx);
+/* Reads VERSION, INFO0 and INFO1 (any build, any number of axes; no check). */
+hexstep_rc_t hexstep_read_info(hexstep_dev_t *dev, hexstep_info_t *info);
+
 /* Known state: aborts every axis (queues flushed), disables and clears interrupts, clears
  * every axis's error flags and restores the reset pulse timing and polarity. Does not clear a
  * latched e-stop (hexstep_estop_clear does that, deliberately). Positions are not reset (the
@@ -123,22 +147,25 @@ hexstep_rc_t hexstep_set_pulse(hexstep_dev_t *dev, unsigned axis, const hexstep_
 
 /* Writes a move into the axis's staging registers (no push). */
 hexstep_rc_t hexstep_load_move(hexstep_dev_t *dev, unsigned axis, const hexstep_move_t *move);
-/* Pushes the staged move into the axis's queue. HEXSTEP_ERR_QUEUE_FULL (nothing written) if the
- * queue has no free slot, HEXSTEP_ERR_ESTOP if the e-stop is latched. */
+/* Pushes the staged move into the axis's queue (the core checks it and acks the write once it
+ * is queued). HEXSTEP_ERR_QUEUE_FULL (nothing written) if the queue has no free slot,
+ * HEXSTEP_ERR_ESTOP if the e-stop is latched. */
 hexstep_rc_t hexstep_push(hexstep_dev_t *dev, unsigned axis);
 /* Checks for a free slot and the e-stop first, then load + push. */
 hexstep_rc_t hexstep_queue_move(hexstep_dev_t *dev, unsigned axis, const hexstep_move_t *move);
 /* Free queue slots of an axis (0..2) into *free_slots. */
 hexstep_rc_t hexstep_queue_free(hexstep_dev_t *dev, unsigned axis, unsigned *free_slots);
 
-/* Starts the queue heads of the axes in mask on one clock edge. Returns after the start has
- * taken effect (a read-back after the write), so a following poll sees the axes running. */
+/* Starts the queue heads of the axes in mask in one frame (the next frame boundary, at most
+ * 32 cycles after the write): their motions share one time zero. A pending start counts as
+ * running (STATUS.run), so a poll right after the call sees the axes running. */
 hexstep_rc_t hexstep_start(hexstep_dev_t *dev, uint32_t mask);
-/* Aborts the axes in mask at once (no new STEP edge) and flushes their queues. */
+/* Aborts the axes in mask on the edge after the write (no new STEP edge) and flushes their
+ * queues. */
 hexstep_rc_t hexstep_abort(hexstep_dev_t *dev, uint32_t mask);
-/* Controlled stop of the axes in mask: each decelerates by its move's dec from the speed it has
- * and comes to rest (docs/REGISTERS.md, STOP); their queues are flushed. Poll hexstep_done() or
- * hexstep_wait() for rest. */
+/* Controlled stop of the axes in mask from the next frame boundary: each decelerates by its
+ * move's dec from the speed it has and comes to rest (docs/REGISTERS.md, STOP); their queues are
+ * flushed. Poll hexstep_done() or hexstep_wait() for rest. */
 hexstep_rc_t hexstep_stop(hexstep_dev_t *dev, uint32_t mask);
 
 hexstep_rc_t hexstep_axis_status(hexstep_dev_t *dev, unsigned axis, hexstep_axis_status_t *st);

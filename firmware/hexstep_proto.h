@@ -53,7 +53,7 @@
 #define HXP_E_LENGTH 2u    /* LEN above HXP_MAX_PAYLOAD or wrong for the command */
 #define HXP_E_COMMAND 3u   /* unknown command */
 #define HXP_E_ARG 4u       /* axis >= 6, mask outside 0x3F, dir > 1, unknown flag bits */
-#define HXP_E_RANGE 5u     /* a value does not fit its register (acc/dec > 44 bits, pulse > 4095) */
+#define HXP_E_RANGE 5u     /* a value does not fit its register (acc/dec > 48 bits, pulse > 4095) */
 #define HXP_E_FULL 6u      /* the axis's move FIFO is full: nothing stored, send again later */
 #define HXP_E_ESTOP 7u     /* e-stop latched: motion commands refused */
 #define HXP_E_BUSY 8u      /* PULSE on an axis that is moving or has moves waiting */

@@ -21,11 +21,11 @@ extern "C" {
 #define HEXSTEP__VERSION__MINOR_bm 0xff
 #define HEXSTEP__VERSION__MINOR_bp 0
 #define HEXSTEP__VERSION__MINOR_bw 8
-#define HEXSTEP__VERSION__MINOR_reset 0x2
+#define HEXSTEP__VERSION__MINOR_reset 0x0
 #define HEXSTEP__VERSION__MAJOR_bm 0xff00
 #define HEXSTEP__VERSION__MAJOR_bp 8
 #define HEXSTEP__VERSION__MAJOR_bw 8
-#define HEXSTEP__VERSION__MAJOR_reset 0x0
+#define HEXSTEP__VERSION__MAJOR_reset 0x1
 #define HEXSTEP__VERSION__NAXES_bm 0xff0000
 #define HEXSTEP__VERSION__NAXES_bp 16
 #define HEXSTEP__VERSION__NAXES_bw 8
@@ -87,6 +87,42 @@ extern "C" {
 #define HEXSTEP__STOP__MASK_bw 6
 #define HEXSTEP__STOP__MASK_reset 0x0
 
+// reg - hexstep::INFO0
+#define HEXSTEP__INFO0__SPEED_W_bm 0xff
+#define HEXSTEP__INFO0__SPEED_W_bp 0
+#define HEXSTEP__INFO0__SPEED_W_bw 8
+#define HEXSTEP__INFO0__SPEED_W_reset 0x40
+#define HEXSTEP__INFO0__ACC_W_bm 0xff00
+#define HEXSTEP__INFO0__ACC_W_bp 8
+#define HEXSTEP__INFO0__ACC_W_bw 8
+#define HEXSTEP__INFO0__ACC_W_reset 0x30
+#define HEXSTEP__INFO0__STEP_W_bm 0xff0000
+#define HEXSTEP__INFO0__STEP_W_bp 16
+#define HEXSTEP__INFO0__STEP_W_bw 8
+#define HEXSTEP__INFO0__STEP_W_reset 0x20
+#define HEXSTEP__INFO0__DFRAC_W_bm 0xff000000
+#define HEXSTEP__INFO0__DFRAC_W_bp 24
+#define HEXSTEP__INFO0__DFRAC_W_bw 8
+#define HEXSTEP__INFO0__DFRAC_W_reset 0x20
+
+// reg - hexstep::INFO1
+#define HEXSTEP__INFO1__PULSE_W_bm 0xff
+#define HEXSTEP__INFO1__PULSE_W_bp 0
+#define HEXSTEP__INFO1__PULSE_W_bw 8
+#define HEXSTEP__INFO1__PULSE_W_reset 0xc
+#define HEXSTEP__INFO1__POS_W_bm 0xff00
+#define HEXSTEP__INFO1__POS_W_bp 8
+#define HEXSTEP__INFO1__POS_W_bw 8
+#define HEXSTEP__INFO1__POS_W_reset 0x20
+#define HEXSTEP__INFO1__FRAME_LOG2_bm 0xff0000
+#define HEXSTEP__INFO1__FRAME_LOG2_bp 16
+#define HEXSTEP__INFO1__FRAME_LOG2_bw 8
+#define HEXSTEP__INFO1__FRAME_LOG2_reset 0x5
+#define HEXSTEP__INFO1__SLOTS_bm 0xff000000
+#define HEXSTEP__INFO1__SLOTS_bp 24
+#define HEXSTEP__INFO1__SLOTS_bw 8
+#define HEXSTEP__INFO1__SLOTS_reset 0x8
+
 // reg - hexstep::axis_t::word32_r
 #define HEXSTEP__AXIS_T__WORD32_R__VAL_bm 0xffffffff
 #define HEXSTEP__AXIS_T__WORD32_R__VAL_bp 0
@@ -103,11 +139,11 @@ extern "C" {
 #define HEXSTEP__AXIS_T__DIR__JOG_bw 1
 #define HEXSTEP__AXIS_T__DIR__JOG_reset 0x0
 
-// reg - hexstep::axis_t::word12_r
-#define HEXSTEP__AXIS_T__WORD12_R__VAL_bm 0xfff
-#define HEXSTEP__AXIS_T__WORD12_R__VAL_bp 0
-#define HEXSTEP__AXIS_T__WORD12_R__VAL_bw 12
-#define HEXSTEP__AXIS_T__WORD12_R__VAL_reset 0x0
+// reg - hexstep::axis_t::word16_r
+#define HEXSTEP__AXIS_T__WORD16_R__VAL_bm 0xffff
+#define HEXSTEP__AXIS_T__WORD16_R__VAL_bp 0
+#define HEXSTEP__AXIS_T__WORD16_R__VAL_bw 16
+#define HEXSTEP__AXIS_T__WORD16_R__VAL_reset 0x0
 
 // reg - hexstep::axis_t::CMD
 #define HEXSTEP__AXIS_T__CMD__PUSH_bm 0x1
@@ -235,7 +271,9 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t IRQ_ENABLE;
     uint32_t IRQ_PENDING;
     uint32_t STOP;
-    uint8_t RESERVED_20_ff[0xe0];
+    uint32_t INFO0;
+    uint32_t INFO1;
+    uint8_t RESERVED_28_ff[0xd8];
     hexstep__axis_t__stride80_t AXIS[6];
 } hexstep_t;
 

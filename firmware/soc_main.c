@@ -6,9 +6,9 @@
  *
  * One image serves every build of the SoC: the firmware reads the number of axes from the
  * core's VERSION register (1..6; a board build may have fewer, synth/targets.json) and the
- * widths of its move and pulse registers from their writable bits (a reduced build has
- * narrower ones). A request naming an axis the core lacks is refused with E_ARG, a value
- * wider than its register with E_RANGE: nothing is truncated.
+ * widths of its move and pulse registers from INFO0/INFO1 (a reduced build may have narrower
+ * ones). A request naming an axis the core lacks is refused with E_ARG, a value wider than its
+ * register with E_RANGE: nothing is truncated.
  *
  * Build-time settings (soc/CMakeLists.txt passes them):
  *   HXFW_BYTE_TIMEOUT  cycles without a byte after which a started frame is dropped (E_TIMEOUT)
@@ -47,14 +47,9 @@ static inline uint32_t cycles(void) {
 
 /* ---- state ---- */
 static hexstep_dev_t dev;
-static unsigned naxes;     /* VERSION.naxes of the core, 1..HEXSTEP_NUM_AXES */
-static uint32_t axes_mask; /* its axes: (1 << naxes) - 1 */
-
-/* Writable bits of the staging words STEPS..DEC_FRAC (the order of hexstep_regs.h) and of the
- * pulse timing registers: the widths of this build of the core. */
-#define STG_WORDS 17u
-static uint32_t stg_mask[STG_WORDS];
-static uint32_t pulse_mask;
+static hexstep_info_t info; /* the build of the core: widths, VERSION.naxes */
+static unsigned naxes;      /* VERSION.naxes of the core, 1..HEXSTEP_NUM_AXES */
+static uint32_t axes_mask;  /* its axes: (1 << naxes) - 1 */
 
 typedef struct {
   hexstep_move_t m[HXFW_FIFO_DEPTH];
@@ -116,51 +111,38 @@ static void put32(uint8_t *p, uint32_t v) {
 }
 
 /* ---- the core: axes and register widths ---- */
-#define HS_AXIS_OFF(reg) \
-  ((uint32_t)(offsetof(hexstep_t, AXIS) + offsetof(hexstep__axis_t__stride80_t, reg)))
 #define HS_REG(off) (*(volatile uint32_t *)(HEXSTEP_BASE + (off)))
 
 /* The driver's hexstep_init accepts only the six-axis core; a board build may have fewer axes
- * (their registers exist, the others read 0 and ignore writes). Waits for the core, then
- * learns the widths on axis 0 (before hexstep_reset, which rewrites the pulse registers and
- * the SoC has just left reset: the staging words are not in use). */
+ * (their registers exist, the others read 0 and ignore writes). Waits for the core (ID and a
+ * map of major version 1, whose units are those `hexstep plan` computes), then reads its
+ * build: the widths decide which values fit (move_fits, cmd_pulse) and are what INFO reports. */
 static void core_init(void) {
-  unsigned i;
-  for (;;) {
-    const uint32_t ver = HS_REG(offsetof(hexstep_t, VERSION));
-    naxes = (ver & HEXSTEP__VERSION__NAXES_bm) >> HEXSTEP__VERSION__NAXES_bp;
-    if (HS_REG(offsetof(hexstep_t, ID)) == HEXSTEP_ID_MAGIC && naxes >= 1u && naxes <= HEXSTEP_NUM_AXES)
-      break;
-  }
-  axes_mask = (1u << naxes) - 1u;
   dev.base = HEXSTEP_BASE;
   dev.read = NULL;
   dev.write = NULL;
   dev.ctx = NULL;
-  for (i = 0; i < STG_WORDS; ++i) {
-    const uint32_t off = HS_AXIS_OFF(STEPS) + 4u * i;
-    HS_REG(off) = 0xFFFFFFFFu;
-    stg_mask[i] = HS_REG(off);
-    HS_REG(off) = 0u;
+  for (;;) {
+    const uint32_t ver = HS_REG(offsetof(hexstep_t, VERSION));
+    naxes = (ver & HEXSTEP__VERSION__NAXES_bm) >> HEXSTEP__VERSION__NAXES_bp;
+    if (HS_REG(offsetof(hexstep_t, ID)) == HEXSTEP_ID_MAGIC &&
+        ((ver & HEXSTEP__VERSION__MAJOR_bm) >> HEXSTEP__VERSION__MAJOR_bp) == HEXSTEP__VERSION__MAJOR_reset &&
+        naxes >= 1u && naxes <= HEXSTEP_NUM_AXES)
+      break;
   }
-  HS_REG(HS_AXIS_OFF(STEP_HIGH)) = 0xFFFFFFFFu;
-  pulse_mask = HS_REG(HS_AXIS_OFF(STEP_HIGH));
+  axes_mask = (1u << naxes) - 1u;
+  (void)hexstep_read_info(&dev, &info);
 }
 
-/* Every word of the move fits its staging register. */
+/* v has no bit at or above bit w. */
+static bool fits(uint64_t v, unsigned w) { return w >= 64u || (v >> w) == 0u; }
+
+/* Every value of the move fits its register in this build (the core would drop the upper bits). */
 static bool move_fits(const hexstep_move_t *m) {
-  const uint32_t w[STG_WORDS] = {m->steps, m->dir,
-                                 (uint32_t)m->v_start, (uint32_t)(m->v_start >> 32),
-                                 (uint32_t)m->v_max, (uint32_t)(m->v_max >> 32),
-                                 (uint32_t)m->v_end, (uint32_t)(m->v_end >> 32),
-                                 (uint32_t)m->v_dec, (uint32_t)(m->v_dec >> 32),
-                                 (uint32_t)m->acc, (uint32_t)(m->acc >> 32),
-                                 (uint32_t)m->dec, (uint32_t)(m->dec >> 32),
-                                 m->acc_steps, m->dec_step, m->dec_frac};
-  unsigned i;
-  for (i = 0; i < STG_WORDS; ++i)
-    if ((w[i] & ~stg_mask[i]) != 0u) return false;
-  return true;
+  return fits(m->steps, info.step_w) && fits(m->acc_steps, info.step_w) && fits(m->dec_step, info.step_w) &&
+         fits(m->v_start, info.speed_w) && fits(m->v_max, info.speed_w) && fits(m->v_end, info.speed_w) &&
+         fits(m->v_dec, info.speed_w) && fits(m->acc, info.acc_w) && fits(m->dec, info.acc_w) &&
+         fits(m->dec_frac, info.dfrac_w);
 }
 
 /* ---- motion ---- */
@@ -236,8 +218,8 @@ static unsigned cmd_pulse(const uint8_t *p, uint8_t *r) {
   pc.dir_hold = get16(p + 7);
   pc.step_invert = p[9] & 1u;
   pc.dir_invert = (p[9] >> 1) & 1u;
-  if ((pc.step_high & ~pulse_mask) != 0u || (pc.step_low & ~pulse_mask) != 0u ||
-      (pc.dir_setup & ~pulse_mask) != 0u || (pc.dir_hold & ~pulse_mask) != 0u)
+  if (!fits(pc.step_high, info.pulse_w) || !fits(pc.step_low, info.pulse_w) ||
+      !fits(pc.dir_setup, info.pulse_w) || !fits(pc.dir_hold, info.pulse_w))
     return r[0] = HXP_E_RANGE, 1u;
   if (hexstep_axis_status(&dev, k, &st) != HEXSTEP_OK) return r[0] = HXP_E_ARG, 1u;
   if ((active & (1u << k)) || st.busy || st.run || fifo[k].count != 0u) return r[0] = HXP_E_BUSY, 1u;
@@ -262,7 +244,7 @@ static unsigned cmd_move(const uint8_t *p, uint8_t *r) {
   m.acc_steps = get32(p + 54);
   m.dec_step = get32(p + 58);
   m.dec_frac = get32(p + 62);
-  if ((m.acc >> 44) != 0u || (m.dec >> 44) != 0u || !move_fits(&m)) return r[0] = HXP_E_RANGE, 1u;
+  if (!move_fits(&m)) return r[0] = HXP_E_RANGE, 1u;
   if (estop_latched()) return r[0] = HXP_E_ESTOP, 1u;
   f = &fifo[k];
   if (f->count >= HXFW_FIFO_DEPTH) {
@@ -328,23 +310,15 @@ static unsigned cmd_clear(uint8_t *r) {
   return 1u;
 }
 
-static unsigned bits_set(uint32_t x) {
-  unsigned n = 0u;
-  for (; x != 0u; x &= x - 1u) ++n;
-  return n;
-}
-
-/* The widths of this build of the core, counted from the writable bits found by core_init
- * (stg_mask in the order of hexstep_regs.h: STEPS, DIR, V_START lo/hi, V_MAX lo/hi, V_END lo/hi,
- * V_DEC lo/hi, ACC lo/hi, DEC lo/hi, ACC_STEPS, DEC_STEP, DEC_FRAC). The host compares them
- * with the widths its job was planned for. */
+/* The widths of this build of the core (INFO0/INFO1): the host compares them with the widths
+ * its job was planned for. */
 static unsigned cmd_info(uint8_t *r) {
   r[0] = HXP_OK;
-  r[1] = (uint8_t)(bits_set(stg_mask[4]) + bits_set(stg_mask[5])); /* V_MAX: SPEED_W */
-  r[2] = (uint8_t)(bits_set(stg_mask[10]) + bits_set(stg_mask[11])); /* ACC: ACC_W */
-  r[3] = (uint8_t)bits_set(stg_mask[0]);                             /* STEPS: STEP_W */
-  r[4] = (uint8_t)bits_set(stg_mask[16]);                            /* DEC_FRAC: DFRAC_W */
-  r[5] = (uint8_t)bits_set(pulse_mask);                              /* STEP_HIGH: PULSE_W */
+  r[1] = info.speed_w;
+  r[2] = info.acc_w;
+  r[3] = info.step_w;
+  r[4] = info.dfrac_w;
+  r[5] = info.pulse_w;
   return HXP_INFO_REPLY_LEN;
 }
 

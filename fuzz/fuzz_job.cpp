@@ -10,6 +10,7 @@
 
 #include "fuzz_check.hpp"
 #include "hexstep/job_io.hpp"
+#include "hexstep/top_sim.hpp"
 
 using namespace hexstep;
 using hexstep::fuzz::check;
@@ -37,9 +38,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   check(same_job(job, again), "parse_job(write_job(j)) != j");
   check(write_job(again) == canon, "write_job is not canonical");
-  // The first moves start at cycle 0 and later ones as earlier ones end: a bounded run shows
-  // whether the core refuses a move that the reader let through.
-  CoreModel model;
+  // The runner pushes the first two moves of every axis, starts them on one START and refills
+  // the queues as moves end: a bounded run shows whether the core's loader refuses a move that
+  // the reader let through (reported at the move's start as ERR.move).
+  ModelSim model;
   RunOptions ro;
   ro.event_mode = true;
   ro.max_cycles = 20000;

@@ -20,7 +20,6 @@
 #include <vector>
 
 #include "fuzz_check.hpp"
-#include "hexstep/core.hpp"
 #include "hexstep/job.hpp"
 #include "hexstep/planner.hpp"
 
@@ -145,7 +144,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   const real cycles = p.duration * clock;
   if (steps > 2000 || !(cycles < 1e13L)) return 0;
-  CoreModel model;
+  ModelSim model;
   Job job;
   job.axes[0].moves.push_back(e.regs);
   RunOptions ro;

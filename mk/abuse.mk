@@ -20,7 +20,7 @@ FUZZ_TARGETS  := job json cli planner
 FUZZ_SECONDS  ?= 60
 FUZZ_SHORT_SECONDS ?= 12
 # Long co-simulation tests under the sanitizers in `make test`: fewer moves/cycles
-# (tests/rtl/test_cosim.cpp, tests/rtl/test_wb_model.cpp, tests/soak/slice.sh).
+# (tests/rtl/test_cosim.cpp, tests/rtl/test_wb.cpp, tests/soak/slice.sh).
 SAN_COSIM_ENV := COSIM_MOVES=84 COSIM_CYCLES=300000 SOAK_SLICE_MOVES=12 WB_MODEL_CYCLES=300000
 SAN_ENV       := ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 SOAK_MOVES    ?= 100000

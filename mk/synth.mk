@@ -10,9 +10,9 @@
 # after the remaining targets have run. `make test` runs the bounded slice: ctest label `tool`
 # (synth/CMakeLists.txt).
 # SoC board builds (soc/boards/, targets soc_*): PicoRV32 + firmware + hexstep_top; the firmware
-# image is $(BUILD)/soc/hexstep_fw.hex from the firmware build (built first). They are not part
-# of `make synth` (soc_ulx3s alone takes about half an hour): make synth-soc_icebreaker,
-# make synth-soc_ulx3s, or make synth-soc for both and the summary table.
+# image is $(BUILD)/soc/hexstep_fw.hex from the firmware build (built first). They need the C++
+# build for the firmware, so they are not part of `make synth` (about four minutes each):
+# make synth-soc_icebreaker, make synth-soc_ulx3s, or make synth-soc for both and the table.
 SYNTH_FLOW    := $(VENV)/bin/python3 synth/flow.py
 SYNTH_TARGETS := ooc_hx8k ooc_up5k ooc_ecp5_25f ooc_ecp5_85f icebreaker ulx3s colorlight_i5
 SYNTH_SOC_TARGETS := soc_icebreaker soc_ulx3s

@@ -1,19 +1,37 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: STEP/DIR output stage of one axis (pulse timing, DIR setup/hold, position counter).
+// hexstep: STEP/DIR output stage of one axis: step requests due at a cycle, pulse timing, DIR
+// setup/hold, position counter.
 `default_nettype none
 
-// Turns "a step is owed" into STEP pulses with the programmed high/low times, switches DIR to
-// the target level only when the hold time after the last rising edge has passed, holds the
-// next rising edge back until DIR has been stable for the setup time, and counts the signed
-// position. Counterpart of the "pulse stage" lines of AxisModel::tick() (cpp_model/src/axis.cpp).
+// The engine hands over each generated step as a request due at a given cycle (the cycle
+// counter modulo 128, g_i); on that cycle the step becomes owed, and an owed step rises as
+// soon as the pulse timing allows. Counterpart of hexstep::PulseStage (cpp_model/src/axis.cpp).
 //
-// Timing inputs are used live every cycle (not latched); a value of 0 for step_high_i or
-// step_low_i acts as 1. The step level resets low and the DIR level and DIR target reset to 1
-// (positive motion); the pins are these levels XOR the live polarity inputs.
+// Timing, with four intervals loaded from the live configuration at the event that starts
+// each (a counter counts down and stops at 1, or stays at 0 if loaded with 0; an interval is
+// over when its counter is at most 1):
+//   rise:        STEP goes high; high <- step_high, hold <- dir_hold.
+//   fall:        at the edge of the last high cycle (high over); low <- step_low.
+//   DIR change:  to the target direction when hold is over; setup <- dir_setup.
+//   next rise:   a step is owed, STEP is low, low is over, DIR shows the target and setup is
+//                over.
+// Two counters hold the four intervals: high and low never matter at the same time (STEP high:
+// only high; low: only low, reloaded at every fall), nor do hold and setup (a DIR change needs
+// hold over and setup is only reloaded then; a rise needs setup over and only then reloads
+// hold), so c_step serves high/low by the STEP level and c_dir serves hold/setup by a mode bit.
+// So every pulse is exactly step_high cycles high (0 acts as 1), rising edges are at least
+// step_high + step_low cycles apart, DIR changes at least dir_hold cycles after a rising edge
+// and at least dir_setup cycles before the next one. A configuration written in the middle of
+// an interval applies from the next interval on. The step level resets low, DIR level and
+// target to 1 (positive motion); the pins are these levels XOR the live polarity inputs.
+//
+// Three request entries: a request is due up to 68 cycles after the start of its tick's frame,
+// so at one step per tick the requests of two earlier ticks can still wait when the next one is
+// decided. accepts_o tells the engine that a new request fits (fewer than 3 steps wait, entries
+// and owed together); it never sends one otherwise.
 module hexstep_pulse #(
-  // PULSE_W: width of the pulse timing inputs, in bits (unit: clock cycles). Range 1..30;
+  // PULSE_W: width of the pulse timing inputs, in bits (unit: clock cycles). Range 1..16;
   // default 12 (up to 4095 cycles, 40.95 us at 100 MHz, covers the slowest common drivers).
-  // The cycles-since-rise counter is PULSE_W+1 bits so that it can reach high+low time.
   parameter integer PULSE_W = 12,
   // POS_W: width of the signed (two's complement) position counter, in bits (unit: steps).
   // Range 2..64; default 32. It wraps modulo 2^POS_W, like the model.
@@ -21,11 +39,13 @@ module hexstep_pulse #(
 ) (
   input  wire               clk_i,
   input  wire               rst_i,        // synchronous, active high
-  // From the generator.
-  input  wire               owed_nz_i,    // at least one generated step still has to be pulsed
-  input  wire               abort_i,      // abort strobe: no new rising edge this cycle
-  input  wire               tgt_load_i,   // accepted start: load the DIR target
-  input  wire               tgt_dir_i,    // DIR target of the new move (1: positive)
+  input  wire [6:0]         g_i,          // cycle counter (modulo 128)
+  // From the engine.
+  input  wire               abort_i,      // abort: drop requests and owed steps, no rise
+  input  wire               req_i,        // a step request, committed at this edge
+  input  wire [6:0]         req_due_i,    // ... due on the cycle with g_i == req_due_i
+  input  wire               tgt_load_i,   // a move starts at this edge: load the DIR target
+  input  wire               tgt_dir_i,    // its direction (1: positive)
   // Live timing configuration (clock cycles).
   input  wire [PULSE_W-1:0] step_high_i,  // STEP high time (0 acts as 1)
   input  wire [PULSE_W-1:0] step_low_i,   // minimum STEP low time (0 acts as 1)
@@ -33,93 +53,171 @@ module hexstep_pulse #(
   input  wire [PULSE_W-1:0] dir_hold_i,   // DIR stable this long after a rising STEP edge
   input  wire               step_inv_i,   // STEP pin active low
   input  wire               dir_inv_i,    // DIR pin low for positive motion
-  // To the generator.
-  output wire               rise_o,       // a STEP rising edge is registered at this clock edge
+  // To the engine.
+  output wire               accepts_o,    // a request can be taken
+  output wire               pending_o,    // requests or owed steps wait
+  output wire               tgt_o,        // DIR target
   // Pins and position.
   output wire               step_o,
   output wire               dir_o,
   output wire [POS_W-1:0]   pos_o
 );
 
-  localparam integer CNT_W = PULSE_W + 1;  // width of the cycles-since-rise counter
-
-  localparam [CNT_W-1:0]   C_MAX = {CNT_W{1'b1}};
-  localparam [PULSE_W-1:0] D_MAX = {PULSE_W{1'b1}};
-  localparam [CNT_W-1:0]   C_ONE = 1;
-  localparam [PULSE_W-1:0] D_ONE = 1;
-  localparam [POS_W-1:0]   P_ONE = 1;
+  localparam [PULSE_W-1:0] T_ONE = 1;
 
   // State.
+  reg               v0_q, v0_d, v1_q, v1_d, v2_q, v2_d;  // request entries valid
+  reg [6:0]         t0_q, t0_d, t1_q, t1_d, t2_q, t2_d;  // ... and their due cycles
+  reg [1:0]         owed_q, owed_d;      // steps due but not yet pulsed (at most 3)
   reg               step_q, step_d;      // STEP level before polarity (1: pulse high)
   reg               dir_q, dir_d;        // DIR level before polarity (1: positive)
   reg               tgt_q, tgt_d;        // DIR level wanted by the current move
-  reg [CNT_W-1:0]   c_q, c_d;            // cycles since the last rising edge, saturating
-  reg [PULSE_W-1:0] d_q, d_d;            // cycles since the last DIR change, saturating
+  reg [PULSE_W-1:0] cs_q, cs_d;          // STEP high: high time left; low: low time left
+  reg [PULSE_W-1:0] cd_q, cd_d;          // hold mode: DIR hold left; setup mode: setup left
+  reg               md_q, md_d;          // c_dir mode (1: hold, 0: setup)
   reg [POS_W-1:0]   pos_q, pos_d;        // signed position
+  // Each counter's "interval over" (at most 1), kept in a register beside it so that the rise
+  // condition is a few gates of registers.
+  reg               cso_q, cso_d, cdo_q, cdo_d;
 
-  // Combinational helpers.
-  reg [PULSE_W-1:0] hi_t, lo_t;          // step high/low time with 0 read as 1
-  reg [CNT_W-1:0]   hi_x, hold_x;        // the same, zero-extended to the counter width
-  reg [CNT_W-1:0]   period;              // hi_t + lo_t (cannot overflow CNT_W bits)
-  reg               dir_change, rise, fall;
+  // A counter's interval is over at 1 or 0.
+  function over(input [PULSE_W-1:0] t);
+    over = (t >> 1) == {PULSE_W{1'b0}};
+  endfunction
+
+  reg dir_change, rise, fall, due0, due1, due2;
 
   always @* begin
-    // Timing with 0 acting as 1.
-    hi_t = (step_high_i == {PULSE_W{1'b0}}) ? D_ONE : step_high_i;
-    lo_t = (step_low_i == {PULSE_W{1'b0}}) ? D_ONE : step_low_i;
-    hi_x = {1'b0, hi_t};
-    hold_x = {1'b0, dir_hold_i};
-    period = hi_x + {1'b0, lo_t};
-
     // Events, all from the old state.
-    dir_change = (dir_q != tgt_q) && (c_q >= hold_x);
-    rise = !abort_i && owed_nz_i && !step_q && (dir_q == tgt_q) && (c_q >= period) &&
-           (d_q >= dir_setup_i);
-    fall = step_q && (c_q >= hi_x);
+    due0 = v0_q && (t0_q == g_i);
+    due1 = v1_q && (t1_q == g_i);
+    due2 = v2_q && (t2_q == g_i);
+    // hold over: in hold mode the counter, in setup mode always (hold ended before setup began);
+    // setup over: in setup mode the counter, in hold mode always (likewise).
+    dir_change = (dir_q != tgt_q) && (cdo_q || !md_q);
+    rise = !abort_i && (owed_q != 2'd0) && !step_q && cso_q && (dir_q == tgt_q) && (cdo_q || md_q);
+    fall = step_q && cso_q;
 
     // Next state, defaults first.
+    v0_d = v0_q && !due0;
+    v1_d = v1_q && !due1;
+    v2_d = v2_q && !due2;
+    t0_d = t0_q;
+    t1_d = t1_q;
+    t2_d = t2_q;
+    // At most one entry is due per cycle (requests are due on distinct cycles).
+    owed_d = owed_q + {1'b0, due0 | due1 | due2} - {1'b0, rise};
     step_d = step_q;
     dir_d = dir_q;
     tgt_d = tgt_q;
-    c_d = (c_q == C_MAX) ? C_MAX : c_q + C_ONE;
-    d_d = (d_q == D_MAX) ? D_MAX : d_q + D_ONE;
+    // Count down while the interval runs (a clock enable, not a multiplexer).
+    cs_d = cso_q ? cs_q : cs_q - T_ONE;
+    cd_d = cdo_q ? cd_q : cd_q - T_ONE;
+    md_d = md_q;
     pos_d = pos_q;
 
-    if (rise) begin
-      step_d = 1'b1;
-      c_d = C_ONE;
-      pos_d = dir_q ? pos_q + P_ONE : pos_q - P_ONE;
-    end else if (fall) begin
-      step_d = 1'b0;
+    // A request takes the first entry that is free now: accepts_o promised fewer than three
+    // waiting steps, so one is (an entry that falls due at this edge is not reused before the
+    // next one).
+    if (req_i) begin
+      if (!v0_q) begin
+        v0_d = 1'b1;
+        t0_d = req_due_i;
+      end else if (!v1_q) begin
+        v1_d = 1'b1;
+        t1_d = req_due_i;
+      end else begin
+        v2_d = 1'b1;
+        t2_d = req_due_i;
+      end
     end
-    if (dir_change) begin
+    if (abort_i) begin
+      v0_d = 1'b0;
+      v1_d = 1'b0;
+      v2_d = 1'b0;
+      owed_d = 2'd0;
+    end
+    // The reload value of c_step depends only on the STEP level: high at a rise, low at a fall.
+    if (rise || fall) begin
+      step_d = !step_q;
+      cs_d = step_q ? step_low_i : step_high_i;
+    end
+    if (rise) begin
+      cd_d = dir_hold_i;
+      md_d = 1'b1;
+      pos_d = pos_q + {{(POS_W-1){~dir_q}}, 1'b1};   // +1 or -1: one adder
+    end
+    if (dir_change) begin   // never with a rise (DIR differs from the target)
       dir_d = tgt_q;
-      d_d = D_ONE;
+      cd_d = dir_setup_i;
+      md_d = 1'b0;
     end
     if (tgt_load_i) begin
       tgt_d = tgt_dir_i;
     end
+    cso_d = over(cs_d);
+    cdo_d = over(cd_d);
   end
 
   always @(posedge clk_i) begin
     if (rst_i) begin
+      v0_q <= 1'b0;
+      v1_q <= 1'b0;
+      v2_q <= 1'b0;
+      owed_q <= 2'd0;
       step_q <= 1'b0;
       dir_q <= 1'b1;
       tgt_q <= 1'b1;
-      c_q <= C_MAX;
-      d_q <= D_MAX;
+      cs_q <= {PULSE_W{1'b0}};
+      cd_q <= {PULSE_W{1'b0}};
+      md_q <= 1'b1;
       pos_q <= {POS_W{1'b0}};
+      cso_q <= 1'b1; cdo_q <= 1'b1;
     end else begin
+      cso_q <= cso_d; cdo_q <= cdo_d; md_q <= md_d;
+      v0_q <= v0_d;
+      v1_q <= v1_d;
+      v2_q <= v2_d;
+      owed_q <= owed_d;
       step_q <= step_d;
       dir_q <= dir_d;
       tgt_q <= tgt_d;
-      c_q <= c_d;
-      d_q <= d_d;
+      cs_q <= cs_d;
+      cd_q <= cd_d;
       pos_q <= pos_d;
     end
   end
 
-  assign rise_o = rise;
+  // Due cycles: not reset (read only while their entry is valid).
+  always @(posedge clk_i) begin
+    t0_q <= t0_d;
+    t1_q <= t1_d;
+    t2_q <= t2_d;
+  end
+
+  // A request fits: at most two steps (entries + owed) wait, so an entry is free. Both flags
+  // are registered copies computed from the next state (the engine's decision logic then starts
+  // from flip-flops); they describe the state now, like the unregistered expressions would.
+  // The number of waiting steps (entries and owed together, 0..3) is kept as a counter: a
+  // request adds one, a rise takes one, an abort clears it (a request falling due only moves
+  // from an entry to owed).
+  reg  [1:0] wait_q;
+  wire [1:0] wait_d = abort_i ? 2'd0 : wait_q + {1'b0, req_i} - {1'b0, rise};
+  reg        acc_q, pend_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      wait_q <= 2'd0;
+      acc_q <= 1'b1;
+      pend_q <= 1'b0;
+    end else begin
+      wait_q <= wait_d;
+      acc_q <= (wait_d != 2'd3);
+      pend_q <= (wait_d != 2'd0);
+    end
+  end
+  assign accepts_o = acc_q;
+  assign pending_o = pend_q;
+  assign tgt_o = tgt_q;
   assign step_o = step_q ^ step_inv_i;
   assign dir_o = dir_q ^ dir_inv_i;
   assign pos_o = pos_q;

@@ -17,22 +17,35 @@
 //                     CRC over CMD..D[7:0]. The Wishbone write is issued after CS_N rises, and
 //                     only if the frame had exactly 64 bits, a valid CMD and address and the CRC
 //                     matched: a truncated, overlong or corrupted write never reaches the bus.
-//   read (10 bytes):  MOSI  CMD=0x50  ADR[15:8] ADR[7:0] CRC  (4 more bytes, ignored)
+//   read (10 bytes):  MOSI  CMD=0x50  ADR[15:8] ADR[7:0] CRC  (6 more bytes, ignored)
 //                     MISO  STATUS    0x00      0x00     0x00 RSTAT D[31:24] D[23:16] D[15:8] D[7:0] RCRC
 //                     CRC over CMD, ADR[15:8], ADR[7:0]. The Wishbone read is issued once the
 //                     32nd bit is in and valid; RSTAT tells the host whether it was (0xA1) or
 //                     the request was rejected (0xA2, data bytes then read 0). RCRC is the CRC over
-//                     CMD, ADR[15:8], ADR[7:0], D[31:24]..D[7:0], so the host can check that the
-//                     data belong to its request. The register map has no read side effects,
-//                     so a read frame cut short after its request does not change anything.
+//                     CMD, ADR[15:8], ADR[7:0], D[31:24]..D[7:0] as sent, so the host can check
+//                     that the data belong to its request. A read frame cut short after its 32nd
+//                     bit has issued its read (the only read side effect of hexstep_top's map:
+//                     POS_LO latches POS_HI).
 //   STATUS = 0xA0 | {rejected, accepted} of the previous frame (0xA0 after reset): the host
-//            learns whether its last write was executed. Any frame that is not exactly a valid
-//            write or read (CS_N toggled without clocks included) counts as rejected.
+//            learns whether its last write was executed, or its last read answered in time.
+//            Any frame that is not exactly a valid write or read (CS_N toggled without clocks
+//            included) counts as rejected.
 //   sel = Wishbone byte enables of the write; ADR = Wishbone byte address, must be < 2^ADDR_W
 //   (adr[1:0] are passed on; the slave ignores them). Other CMD values are rejected.
 //
-// The SCK half period also bounds the bus: a read must be acked within 8 SCK half periods
-// (hexstep_top acks in 2 cycles). Reset: synchronous, active high; every register is reset.
+// Bus: a Wishbone B4 classic master for a slave with any number of wait states. One request at
+// a time; cyc, stb, we, adr, dat and sel are held from the request until the cycle in which ack
+// is sampled, then cyc and stb fall for at least one cycle. A frame whose request comes while
+// the previous request still waits for its ack is rejected without a bus cycle (a write: STATUS
+// of the next frame says rejected; a read: RSTAT 0xA2). The read data must be acked before the
+// falling SCK edge that starts D[31:24], 17 SCK half periods after the rising edge of bit 32
+// (at least 68 clk_i cycles at the fastest SCK). A read acked later is late: its data bytes are
+// not valid, RCRC is sent inverted (it never matches), and the next STATUS says rejected; the
+// host repeats the read. With hexstep_top (a register read acks in 1 cycle, a staging or
+// configuration read in at most 8) no read is late; its slowest access, CMD.push (about 105
+// cycles), and the initialization after reset (32 * NAXES cycles) end before the next frame can
+// issue a request (at least 260 cycles at the fastest SCK). Reset: synchronous, active high;
+// every register is reset.
 module hexstep_spi_wb #(
   // ADDR_W: Wishbone byte address bits. Range 1..16; default 12 as hexstep_top.
   parameter integer ADDR_W      = 12,
@@ -81,7 +94,9 @@ module hexstep_spi_wb #(
   reg  [7:0]  tcrc_q, tcrc_d;         // CRC of a read reply (request bytes, then data sent)
   reg  [7:0]  tx_q, tx_d;             // MISO shift register
   reg  [1:0]  stat_q, stat_d;         // {rejected, accepted} of the previous frame
-  reg         rd_ok_q, rd_ok_d;       // this frame's read request was accepted
+  reg         rd_ok_q, rd_ok_d;       // this frame's read request was issued
+  reg         rd_done_q, rd_done_d;   // ... and acked (rdat holds its data)
+  reg         rd_late_q, rd_late_d;   // ... and its first data byte went out before the ack
   reg  [31:0] rdat_q, rdat_d;         // read data
   // --- bus ---------------------------------------------------------------------------------------
   reg         cyc_q, cyc_d, we_q, we_d;
@@ -111,7 +126,7 @@ module hexstep_spi_wb #(
 
   always @* begin
     cnt_d = cnt_q;  rx_d = rx_q;  crc_d = crc_q;  tcrc_d = tcrc_q;  tx_d = tx_q;
-    stat_d = stat_q;  rd_ok_d = rd_ok_q;  rdat_d = rdat_q;
+    stat_d = stat_q;  rd_ok_d = rd_ok_q;  rd_done_d = rd_done_q;  rd_late_d = rd_late_q;  rdat_d = rdat_q;
     cyc_d = cyc_q;  we_d = we_q;  adr_d = adr_q;  wdat_d = wdat_q;  sel_d = sel_q;
 
     crc_n   = crc_bit(crc_q, mosi);
@@ -121,25 +136,32 @@ module hexstep_spi_wb #(
     r_valid = (cnt_q == 7'd31) && (crc_n == 8'h00) && (r_cmd == CMD_READ) && adr_ok(r_adr);
     byte_n  = cnt_q[6:3];
 
-    // Bus master: one request held until ack.
+    // Bus master: one request, held until its ack; a new one only once cyc has been low (the
+    // request registers change only then).
     if (cyc_q && wb_ack_i) begin
       cyc_d = 1'b0;
-      if (!we_q) rdat_d = wb_dat_i;
+      if (!we_q && rd_ok_q) begin
+        rdat_d = wb_dat_i;
+        rd_done_d = 1'b1;
+      end
     end
 
     if (cs_fall) begin
-      cnt_d   = 7'd0;
-      crc_d   = 8'h00;
-      rd_ok_d = 1'b0;
-      rdat_d  = 32'h0;
-      tx_d    = {4'hA, 2'b00, stat_q};
+      cnt_d     = 7'd0;
+      crc_d     = 8'h00;
+      rd_ok_d   = 1'b0;
+      rd_done_d = 1'b0;
+      rd_late_d = 1'b0;
+      rdat_d    = 32'h0;
+      tx_d      = {4'hA, 2'b00, stat_q};
     end else if (cs_rise) begin
-      // End of frame: execute a valid write, record the outcome for the next STATUS byte.
-      if (w_valid) begin
+      // End of frame: execute a valid write (if the bus is free), record the outcome for the
+      // next STATUS byte.
+      if (w_valid && !cyc_q) begin
         cyc_d = 1'b1;  we_d = 1'b1;  adr_d = w_adr[ADDR_W-1:0];
         wdat_d = w_dat;  sel_d = w_cmd[3:0];
         stat_d = 2'b01;
-      end else if (rd_ok_q && cnt_q == 7'd80) begin
+      end else if (!w_valid && rd_ok_q && !rd_late_q && cnt_q == 7'd80) begin
         stat_d = 2'b01;
       end else begin
         stat_d = 2'b10;
@@ -148,7 +170,7 @@ module hexstep_spi_wb #(
       if (cnt_q != CNT_MAX) cnt_d = cnt_q + 7'd1;
       rx_d  = rx_sh;
       crc_d = crc_n;
-      if (r_valid) begin
+      if (r_valid && !cyc_q) begin
         cyc_d = 1'b1;  we_d = 1'b0;  adr_d = r_adr[ADDR_W-1:0];  sel_d = 4'hF;
         rd_ok_d = 1'b1;
       end
@@ -161,11 +183,15 @@ module hexstep_spi_wb #(
         case (byte_n)
           // RSTAT of a read frame (rx holds CMD ADR ADR CRC now); 0x00 in any other frame.
           4'd4:    tx_d = rd_ok_q ? 8'hA1 : (rx_q[31:24] == CMD_READ) ? 8'hA2 : 8'h00;
-          4'd5:    tx_d = rdat_q[31:24];
+          4'd5: begin
+            tx_d = rdat_q[31:24];
+            if (rd_ok_q && !rd_done_q) rd_late_d = 1'b1;
+          end
           4'd6:    tx_d = rdat_q[23:16];
           4'd7:    tx_d = rdat_q[15:8];
           4'd8:    tx_d = rdat_q[7:0];
-          4'd9:    tx_d = rd_ok_q ? tcrc_q : 8'h00;
+          // A late read's data are not its data: RCRC inverted, so that it never matches.
+          4'd9:    tx_d = !rd_ok_q ? 8'h00 : rd_late_q ? ~tcrc_q : tcrc_q;
           default: tx_d = 8'h00;
         endcase
       end else begin
@@ -179,14 +205,14 @@ module hexstep_spi_wb #(
       sck_q <= {(SYNC_STAGES+1){1'b0}};  csn_q <= {(SYNC_STAGES+1){1'b1}};
       mosi_q <= {(SYNC_STAGES+1){1'b0}};
       cnt_q <= 7'd0;  rx_q <= 64'd0;  crc_q <= 8'h00;  tcrc_q <= 8'h00;  tx_q <= 8'h00;
-      stat_q <= 2'b00;  rd_ok_q <= 1'b0;  rdat_q <= 32'h0;
+      stat_q <= 2'b00;  rd_ok_q <= 1'b0;  rd_done_q <= 1'b0;  rd_late_q <= 1'b0;  rdat_q <= 32'h0;
       cyc_q <= 1'b0;  we_q <= 1'b0;  adr_q <= {ADDR_W{1'b0}};  wdat_q <= 32'h0;  sel_q <= 4'h0;
     end else begin
       sck_q  <= {sck_q[SYNC_STAGES-1:0], spi_sck_i};
       csn_q  <= {csn_q[SYNC_STAGES-1:0], spi_cs_n_i};
       mosi_q <= {mosi_q[SYNC_STAGES-1:0], spi_mosi_i};
       cnt_q <= cnt_d;  rx_q <= rx_d;  crc_q <= crc_d;  tcrc_q <= tcrc_d;  tx_q <= tx_d;
-      stat_q <= stat_d;  rd_ok_q <= rd_ok_d;  rdat_q <= rdat_d;
+      stat_q <= stat_d;  rd_ok_q <= rd_ok_d;  rd_done_q <= rd_done_d;  rd_late_q <= rd_late_d;  rdat_q <= rdat_d;
       cyc_q <= cyc_d;  we_q <= we_d;  adr_q <= adr_d;  wdat_q <= wdat_d;  sel_q <= sel_d;
     end
   end

@@ -1,44 +1,38 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: Wishbone B4 classic slave turning bus cycles into hexstep_core's plain ports.
+// hexstep: Wishbone B4 classic slave: registers, the memory-backed staging registers and the
+// move loader of the frame engine.
 `default_nettype none
 
-// The register map is rdl/hexstep.rdl (docs/REGISTERS.md); this decode is hand-written and
-// tests/rtl/test_wb.cpp checks it against the constants generated from that file.
+// The register map is rdl/hexstep.rdl (docs/REGISTERS.md); this decode is hand-written and the
+// tests drive the bus through the constants generated from that file. Counterpart:
+// hexstep::TopModel (cpp_model/src/top_model.cpp).
 //
 // Bus: classic single cycles, 32-bit data, byte addresses (adr[1:0] ignored), sel gates each
 // byte lane of a write (also for command and write-1-to-clear bits). A request is
-// cyc & stb & !ack_q: it is acted on at the next rising edge, and ack_o is high for exactly the
-// cycle after that edge (a registered ack: no path from bus inputs to ack_o). A master that
-// holds cyc/stb until ack (B4 classic) therefore never sees ack without cyc & stb, and a
-// request held through the ack cycle is not counted twice. There is no err_o and no stall_o.
-// Unmapped addresses read 0 and are acked; read-only and reserved bits ignore writes.
+// cyc & stb & !ack_q while the bus engine is idle. Registers in flip-flops are acted on at the
+// request's edge and acked in the next cycle. The staging words (STEPS..DEC_FRAC) and the pulse
+// configuration mirror live in the engine's block RAM, reachable on the bus cycles of the frame
+// (every fourth cycle, g[1:0] == 3): a staging read acks two cycles after the first bus cycle
+// following the request, a staging write (read, merge byte lanes and implemented bits, write)
+// at the second bus cycle; a configuration write is a read-modify-write of its mirror word like
+// a staging write, and the live register takes the merged value on the edge of the mirror
+// write, which acks; a configuration read answers from the mirror like a staging read. CMD.push runs the loader: 25 bus cycles reading the staging words
+// and writing the queue slot (inverted deceleration, aligned deceleration fraction, resolved
+// floor, a zero word), checking the refusal rules on the way; it acks at the commit. ack_o is a
+// register; there is no err_o and no stall_o. Unmapped addresses read 0 and are acked.
 //
-// Moves: per axis, the staging words are pushed (CMD.push) into a 2-deep queue whose head
-// drives the core's move inputs (the core latches them only on an accepted start). START
-// (registered: the core sees it on the edge after the write's edge) starts the heads of the
-// selected idle axes together and makes them "running"; a running axis starts its next queued
-// move on the edge right after the core's done pulse, with no gap, and stops running when a
-// move ends with an empty queue. ABORT and the latched e-stop abort the core, flush the queue
-// and clear running. STOP (registered like START) sends the core's controlled-stop strobe,
-// flushes the queue and clears running on the same edge; the axis then decelerates to rest
-// (busy until it does) and a later START acts only once it is idle. A jog move (DIR.jog) runs
-// until STOP.
-//
-// Reset: synchronous, active high, like hexstep_core. The queue slots are not reset (the core
-// samples them only on a start, which needs a pushed entry).
+// After reset the bus engine first initializes the memory (staging words 0, the mirror to the
+// reset configuration) on 8 * NAXES bus cycles; requests wait.
 module hexstep_wb #(
-  // NAXES: number of axes. Range 1..8 (the IRQ registers give each event kind one byte);
-  // default 6. The register map (rdl/hexstep.rdl) documents the default build.
+  // NAXES: number of axes. Range 1..8; default 6. The register map documents the default build.
   parameter integer NAXES   = 6,
-  // Widths of the core's move and pulse ports, as hexstep_core (same defaults). The map holds
-  // SPEED_W and ACC_W up to 64 bits, STEP_W, DFRAC_W and PULSE_W up to 32, POS_W up to 64.
-  parameter integer SPEED_W = 64,
-  parameter integer ACC_W   = 44,
+  // Register widths, as hexstep_top (same defaults).
+  parameter integer ACC_W   = 48,
   parameter integer STEP_W  = 32,
   parameter integer DFRAC_W = 32,
   parameter integer PULSE_W = 12,
   parameter integer POS_W   = 32,
-  // ADDR_W: byte address bits. Range 10..32; default 12 (the map uses 0x000..0x3FF).
+  // ADDR_W: byte address bits. Range 12..32; default 12 (the map uses 0x000..0x4FF).
   parameter integer ADDR_W  = 12
 ) (
   input  wire                     clk_i,
@@ -55,52 +49,64 @@ module hexstep_wb #(
   // E-stop pin (asynchronous, active high) and interrupt (level, active high)
   input  wire                     estop_i,
   output wire                     irq_o,
-  // hexstep_core ports
-  output wire [NAXES-1:0]         start_o,
+  // Engine
+  input  wire [1:0]               kc_i,         // cycle of the frame's slot (g[1:0])
+  output wire [NAXES-1:0]         start_w_o,
+  output wire [NAXES-1:0]         stop_w_o,
   output wire [NAXES-1:0]         abort_o,
-  output wire [NAXES-1:0]         stop_o,
-  output wire [NAXES*STEP_W-1:0]  steps_o,
-  output wire [NAXES-1:0]         dir_o,
-  output wire [NAXES-1:0]         jog_o,
-  output wire [NAXES*SPEED_W-1:0] v_start_o,
-  output wire [NAXES*SPEED_W-1:0] v_max_o,
-  output wire [NAXES*SPEED_W-1:0] v_end_o,
-  output wire [NAXES*SPEED_W-1:0] v_dec_o,
-  output wire [NAXES*ACC_W-1:0]   acc_o,
-  output wire [NAXES*ACC_W-1:0]   dec_o,
-  output wire [NAXES*STEP_W-1:0]  acc_steps_o,
-  output wire [NAXES*STEP_W-1:0]  dec_step_o,
-  output wire [NAXES*DFRAC_W-1:0] dec_frac_o,
+  output wire                     push_o,
+  output wire [2:0]               push_axis_o,
+  output wire [6:0]               push_flags_o,
+  output wire                     bus_re_o,
+  output wire [1:0]               bus_rbank_o,
+  output wire [7:0]               bus_raddr_o,
+  input  wire [31:0]              bus_rdata_i,
+  output wire [3:0]               bus_we_o,
+  output wire [7:0]               bus_waddr_o,
+  output wire [31:0]              bus_wdata_o,
+  output wire                     bus_init_o,
+  input  wire [NAXES*2-1:0]       act_i,
+  input  wire [NAXES*2-1:0]       qn_i,
+  input  wire [NAXES-1:0]         busy_i,
+  input  wire [NAXES-1:0]         run_i,
+  input  wire [NAXES*2-1:0]       phase_i,
+  input  wire [NAXES-1:0]         done_i,
+  input  wire [NAXES-1:0]         refused_i,
+  input  wire [NAXES-1:0]         freed_i,
+  input  wire [NAXES-1:0]         flush_i,
+  // Output stages: live configuration, positions
   output wire [NAXES*PULSE_W-1:0] step_high_o,
   output wire [NAXES*PULSE_W-1:0] step_low_o,
   output wire [NAXES*PULSE_W-1:0] dir_setup_o,
   output wire [NAXES*PULSE_W-1:0] dir_hold_o,
   output wire [NAXES-1:0]         step_inv_o,
   output wire [NAXES-1:0]         dir_inv_o,
-  input  wire [NAXES-1:0]         busy_i,
-  input  wire [NAXES-1:0]         done_i,
-  input  wire [NAXES-1:0]         err_i,
-  input  wire [NAXES*2-1:0]       phase_i,
   input  wire [NAXES*POS_W-1:0]   pos_i
 );
 
   // Word indexes (byte offset / 4) of rdl/hexstep.rdl. Global block at 0x000, axis k at
   // 0x100 + k * 0x80, that is 128-byte block number k + 2.
-  localparam integer G_ID = 0, G_VERSION = 1, G_START = 2, G_ABORT = 3, G_GSTATUS = 4,
-                     G_IRQ_EN = 5, G_IRQ_PEND = 6, G_STOP = 7;
-  localparam integer W_STEPS = 0, W_DIR = 1, W_V_START = 2, W_V_MAX = 4, W_V_END = 6,
-                     W_V_DEC = 8, W_ACC = 10, W_DEC = 12, W_ACC_STEPS = 14, W_DEC_STEP = 15,
-                     W_DEC_FRAC = 16, W_CMD = 17, W_STATUS = 18, W_ERR = 19, W_POS_LO = 20,
-                     W_POS_HI = 21, W_CFG = 22;
-  localparam integer NW = 17;           // staging words per axis (STEPS..DEC_FRAC)
+  localparam [4:0] G_ID = 5'd0, G_VERSION = 5'd1, G_START = 5'd2, G_ABORT = 5'd3,
+                   G_GSTATUS = 5'd4, G_IRQ_EN = 5'd5, G_IRQ_PEND = 5'd6, G_STOP = 5'd7,
+                   G_INFO0 = 5'd8, G_INFO1 = 5'd9;
+  localparam [4:0] W_STEPS = 5'd0, W_DIR = 5'd1, W_V_START = 5'd2, W_V_MAX = 5'd4,
+                   W_V_END = 5'd6, W_V_DEC = 5'd8, W_ACC = 5'd10, W_DEC = 5'd12,
+                   W_ACC_STEPS = 5'd14, W_DEC_STEP = 5'd15, W_DEC_FRAC = 5'd16, W_CMD = 5'd17,
+                   W_STATUS = 5'd18, W_ERR = 5'd19, W_POS_LO = 5'd20, W_POS_HI = 5'd21,
+                   W_CFG = 5'd22;
+  localparam [4:0] NW = 5'd17;          // staging words per axis (STEPS..DEC_FRAC)
   localparam integer NC = 5;            // config words per axis (STEP_HIGH..POLARITY)
-  localparam integer MW = NW * 32;      // bits of one queued move
+  localparam [4:0] W_CFG_END = W_CFG + 5'd5;
   localparam [31:0]  ID_VALUE  = 32'h4858_5354;  // "HXST"
-  localparam [7:0]   VER_MAJOR = 8'd0;
-  localparam [7:0]   VER_MINOR = 8'd2;
+  localparam [7:0]   VER_MAJOR = 8'd1;
+  localparam [7:0]   VER_MINOR = 8'd0;
   localparam [NAXES-1:0] ALL = {NAXES{1'b1}};
-  // Reset of one axis's config words: STEP_HIGH = STEP_LOW = 1, the others 0.
   localparam [NC*32-1:0] CFG_RESET = {32'd0, 32'd0, 32'd0, 32'd1, 32'd1};
+  localparam [5:0] LOADER_STEPS = 6'd25;
+  localparam [1:0] PH_ACCEL = 2'd1, PH_CRUISE = 2'd2, PH_DECEL = 2'd3;
+  // Bus engine operations.
+  localparam [2:0] OP_IDLE = 3'd0, OP_INIT = 3'd1, OP_SRD = 3'd2, OP_SWR = 3'd3, OP_CRD = 3'd4,
+                   OP_CWR = 3'd5, OP_PUSH = 3'd6;
 
   function [31:0] lo_mask(input integer w);
     lo_mask = (w >= 32) ? 32'hFFFF_FFFF : ((32'h1 << w) - 32'h1);
@@ -109,20 +115,33 @@ module hexstep_wb #(
     hi_mask = (w >= 64) ? 32'hFFFF_FFFF : (w <= 32) ? 32'h0 : ((32'h1 << (w - 32)) - 32'h1);
   endfunction
   // Implemented bits of staging word i: the rest are reserved (read 0, writes ignored).
-  function [31:0] stg_mask(input integer i);
+  function [31:0] stg_mask(input [4:0] i);
     case (i)
-      W_STEPS, W_ACC_STEPS, W_DEC_STEP:             stg_mask = lo_mask(STEP_W);
-      W_DIR:                                        stg_mask = 32'h3;
-      W_V_START, W_V_MAX, W_V_END, W_V_DEC:         stg_mask = lo_mask(SPEED_W);
-      W_V_START+1, W_V_MAX+1, W_V_END+1, W_V_DEC+1: stg_mask = hi_mask(SPEED_W);
-      W_ACC, W_DEC:                                 stg_mask = lo_mask(ACC_W);
-      W_ACC+1, W_DEC+1:                             stg_mask = hi_mask(ACC_W);
-      W_DEC_FRAC:                                   stg_mask = lo_mask(DFRAC_W);
-      default:                                      stg_mask = 32'h0;
+      5'd0, 5'd14, 5'd15:                      stg_mask = lo_mask(STEP_W);   // STEPS, ACC_STEPS, DEC_STEP
+      5'd1:                                    stg_mask = 32'h3;             // DIR
+      5'd2, 5'd3, 5'd4, 5'd5, 5'd6, 5'd7, 5'd8, 5'd9: stg_mask = 32'hFFFF_FFFF;  // speeds
+      5'd10, 5'd12:                            stg_mask = lo_mask(ACC_W);    // ACC, DEC low
+      5'd11, 5'd13:                            stg_mask = hi_mask(ACC_W);    // ACC, DEC high
+      5'd16:                                   stg_mask = lo_mask(DFRAC_W);  // DEC_FRAC
+      default:                                 stg_mask = 32'h0;
     endcase
   endfunction
-  function [31:0] cfg_mask(input integer i);
-    cfg_mask = (i == NC - 1) ? 32'h3 : lo_mask(PULSE_W);
+  function [31:0] cfg_mask(input [2:0] i);
+    cfg_mask = (i == 3'd4) ? 32'h3 : lo_mask(PULSE_W);
+  endfunction
+  // Bank and word of staging word i (rtl/hexstep_engine.v, memory map).
+  function [1:0] stg_bank(input [4:0] i);
+    stg_bank = (i < 5'd5) ? 2'd0 : (i < 5'd10) ? 2'd1 : 2'd2;
+  endfunction
+  function [4:0] stg_word(input [4:0] i);
+    stg_word = (i < 5'd5) ? i + 5'd3 : (i < 5'd10) ? i - 5'd2 : i - 5'd9;
+  endfunction
+  function [1:0] inc3(input [1:0] x);
+    inc3 = (x == 2'd2) ? 2'd0 : x + 2'd1;
+  endfunction
+  // Slot word: 8 + 8s + off.
+  function [4:0] slot_word(input [1:0] s, input [2:0] off);
+    slot_word = {s + 2'd1, off};
   endfunction
 
   // ---- state ----
@@ -131,74 +150,94 @@ module hexstep_wb #(
   reg              irq_q, irq_d;
   reg              es1_q, es2_q;              // e-stop pin synchronizer
   reg              estop_q, estop_d;          // latched e-stop
-  reg  [NAXES-1:0] start_cmd_q, start_cmd_d;  // START written at the last edge
   reg  [NAXES-1:0] abort_cmd_q, abort_cmd_d;  // ABORT written at the last edge
-  reg  [NAXES-1:0] stop_cmd_q, stop_cmd_d;    // STOP written at the last edge
-  reg  [NAXES-1:0] run_q, run_d;
-  reg  [NAXES*2-1:0]  cnt_q, cnt_d;           // queue entries, 0..2
   reg  [NAXES*3-1:0]  errf_q, errf_d;         // {estop, overrun, move} per axis
-  reg  [NAXES*32-1:0] poshi_q, poshi_d;       // POS_HI latched by a POS_LO read
+  // POS_HI: the bits above 31 latched by a POS_LO read (POS_W <= 32: the sign only).
+  localparam integer PHW = (POS_W > 32) ? POS_W - 32 : 1;
+  reg  [NAXES*PHW-1:0] poshi_q, poshi_d;
   reg  [31:0]      irq_en_q, irq_en_d;
   reg  [31:0]      pend_q, pend_d;
-  reg  [NAXES*MW-1:0]    stg_q, stg_d;        // staging words
-  // The 2-deep queue is a ring of two slots per axis: an entry stays in the slot it was pushed
-  // into, and the head pointer selects the slot that drives the core. (A shifting queue needs a
-  // 3-way multiplexer in front of every bit of the head; the ring only writes slots from the
-  // staging words and reads the head through one 2-way multiplexer.)
-  reg  [NAXES*MW-1:0]    s0_q, s0_d;          // slot 0
-  reg  [NAXES*MW-1:0]    s1_q, s1_d;          // slot 1
-  reg  [NAXES-1:0]       hp_q, hp_d;          // head slot: the entry the core starts next
-  reg  [NAXES*NC*32-1:0] cfg_q, cfg_d;        // pulse timing and polarity
+  reg  [NAXES*NC*32-1:0] cfg_q, cfg_d;        // pulse timing and polarity (live)
+  // Bus engine.
+  reg  [2:0]       op_q, op_d;
+  reg  [2:0]       oax_q, oax_d;              // axis of the operation
+  reg  [4:0]       owd_q, owd_d;              // staging word / config word / init word
+  reg  [31:0]      odat_q, odat_d;            // write data, merged word, loader data
+  reg  [3:0]       osel_q, osel_d;            // byte enables of a memory write
+  reg              oiss_q, oiss_d;            // the operation's read has been issued
+  reg  [5:0]       ocnt_q, ocnt_d;            // init counter / loader step
+  reg  [1:0]       otail_q, otail_d;          // loader: the slot being filled
+  reg              ocan_q, ocan_d;            // loader: cancelled by a flush
+  // Loader flags and holding register.
+  reg  [31:0]      lh_q, lh_d;
+  reg  [31:0]      rdq_q;                     // the loader's read data, registered
+  reg              lb_q, lb_d;                // borrow of a low-word compare
+  reg  [15:0]      lz_q, lz_d;                // zero flags
+  reg  [5:0]       lg_q, lg_d;                // greater-than flags
+  reg              ljog_q, ljog_d, ldir_q, ldir_d;
+  // lz bits: 0 st, 1 as, 2 ds, 3 df, 4 vm_lo, 5 vm_hi, 6 vs_lo, 7 vs_hi, 8 ve_lo, 9 ve_hi,
+  //          10 dec_lo, 11 dec_hi, 12 acc_lo, 13 acc_hi
+  // lg bits: 0 as > st, 1 ds > st, 2 vs > vm, 3 ve > vm, 4 vd > vm, 5 dec > vm
 
   // ---- bus request decode ----
-  wire        req   = wb_cyc_i & wb_stb_i & ~ack_q;
+  wire        idle  = (op_q == OP_IDLE);
+  wire        req   = wb_cyc_i & wb_stb_i & ~ack_q & idle;
   wire        wr    = req & wb_we_i;
   wire        rd    = req & ~wb_we_i;
   wire [31:0] bmask = {{8{wb_sel_i[3]}}, {8{wb_sel_i[2]}}, {8{wb_sel_i[1]}}, {8{wb_sel_i[0]}}};
-  wire [31:0] wdat  = wb_dat_i & bmask;       // the written ones of command/W1C bits
-  // 128-byte block number and word index, widened to 32 bits to compare with integers.
-  wire [31:0] blk   = {{(32-(ADDR_W-7)){1'b0}}, wb_adr_i[ADDR_W-1:7]};
-  wire [31:0] widx  = {27'd0, wb_adr_i[6:2]};
-  wire        g_hit = (blk == 0);
+  wire [31:0] wdat  = wb_dat_i & bmask;
+  // Block number (128-byte blocks): 0 global, 2..NAXES+1 the axes; higher address bits (a map
+  // wider than ADDR_W = 12) select nothing. Decoded in a few bits, not in 32-bit arithmetic.
+  wire [ADDR_W-8:0] blk = wb_adr_i[ADDR_W-1:7];
+  wire        blk_lo = (blk[ADDR_W-8:4] == {(ADDR_W-11){1'b0}});   // block number < 16
+  wire [4:0]  widx  = wb_adr_i[6:2];
+  wire        g_hit = blk_lo && (blk[3:0] == 4'd0);
+  wire [3:0]  axn   = blk[3:0] - 4'd2;
+  wire        a_hit = blk_lo && (blk[3:0] >= 4'd2) && ({28'd0, axn} < NAXES);
+  wire [2:0]  ak    = axn[2:0];
   wire        unused_adr = &{1'b0, wb_adr_i[1:0]};
+  wire        bus_cyc = (kc_i == 2'd3);
+  reg         arm_q;                             // an operation was there in the last cycle
+  wire        bus_go = bus_cyc & arm_q;          // ... so the port registers hold its access
+  wire        data_cyc = (kc_i == 2'd1);         // read data of the last bus cycle
+  wire        proc_cyc = (kc_i == 2'd2);         // the loader checks that data (registered)
 
-  // IRQ fields: done [7:0], slot [15:8], err [23:16], NAXES bits of each.
   wire [31:0] irq_mask = {8'd0, {(8-NAXES){1'b0}}, ALL, {(8-NAXES){1'b0}}, ALL,
                           {(8-NAXES){1'b0}}, ALL};
+  wire [NAXES-1:0] abort_w = abort_cmd_q | {NAXES{estop_q}};
+  // abort_w and flush_i padded to 8 axes, for indexing with a 3-bit axis number.
+  wire [7:0] abort8, flush8;
+  generate
+    if (NAXES < 8) begin : g_pad
+      assign abort8 = {{(8-NAXES){1'b0}}, abort_w};
+      assign flush8 = {{(8-NAXES){1'b0}}, flush_i};
+    end else begin : g_full
+      assign abort8 = abort_w;
+      assign flush8 = flush_i;
+    end
+  endgenerate
 
-  // Sign-extended positions, 64 bits per axis.
-  wire [NAXES*64-1:0] pos64;
+  // Positions: the low word and the bits above it (POS_W <= 32: the sign) of every axis.
+  wire [NAXES*32-1:0]  pos_lo;
+  wire [NAXES*PHW-1:0] pos_up;
   genvar g;
   generate
     for (g = 0; g < NAXES; g = g + 1) begin : g_pos
-      if (POS_W >= 64) begin : g_full
-        assign pos64[g*64 +: 64] = pos_i[g*POS_W +: 64];
-      end else begin : g_ext
-        assign pos64[g*64 +: 64] = {{(64-POS_W){pos_i[g*POS_W+POS_W-1]}}, pos_i[g*POS_W +: POS_W]};
+      if (POS_W > 32) begin : g_wide
+        assign pos_lo[g*32 +: 32] = pos_i[g*POS_W +: 32];
+        assign pos_up[g*PHW +: PHW] = pos_i[g*POS_W + 32 +: PHW];
+      end else if (POS_W == 32) begin : g_32
+        assign pos_lo[g*32 +: 32] = pos_i[g*POS_W +: 32];
+        assign pos_up[g*PHW +: PHW] = pos_i[g*POS_W + 31];
+      end else begin : g_narrow
+        assign pos_lo[g*32 +: 32] = {{(32-POS_W){pos_i[g*POS_W+POS_W-1]}}, pos_i[g*POS_W +: POS_W]};
+        assign pos_up[g*PHW +: PHW] = pos_i[g*POS_W + POS_W - 1];
       end
     end
   endgenerate
 
-  // Core control: a start pops the queue head on the edge the core latches it.
-  wire [NAXES-1:0] abort_w = abort_cmd_q | {NAXES{estop_q}};
-  // A start: START for an idle axis that is not running (an axis still stopping after STOP is
-  // busy but no longer running: START waits for it), or the chained next move of a running
-  // axis on its done pulse. STOP and abort suppress both. A start the core refuses anyway
-  // shows as AXIS_ERR.move.
-  wire [NAXES-1:0] go;
-  generate
-    for (g = 0; g < NAXES; g = g + 1) begin : g_go
-      assign go[g] = ~abort_w[g] & ~stop_cmd_q[g] & (cnt_q[g*2 +: 2] != 2'd0) &
-                     ((start_cmd_q[g] & ~run_q[g] & ~busy_i[g]) | (run_q[g] & done_i[g]));
-    end
-  endgenerate
-
-  // ---- read data ----
-  // Every word of a block is placed in a flat vector and selected by the word index, then the
-  // block by its number: parallel multiplexers of depth log2, not a priority chain (the read
-  // path was the longest combinational path of the design; docs/SYNTH.md).
-  // Global block: words 0..7 (START, ABORT and STOP read 0), the rest of the block reads 0.
-  wire [8*32-1:0] gwords;
+  // ---- read data of the flip-flop registers ----
+  wire [16*32-1:0] gwords;
   assign gwords[G_ID*32 +: 32]       = ID_VALUE;
   assign gwords[G_VERSION*32 +: 32]  = {8'd0, NAXES[7:0], VER_MAJOR, VER_MINOR};
   assign gwords[G_START*32 +: 32]    = 32'h0;
@@ -207,170 +246,428 @@ module hexstep_wb #(
   assign gwords[G_IRQ_EN*32 +: 32]   = irq_en_q;
   assign gwords[G_IRQ_PEND*32 +: 32] = pend_q;
   assign gwords[G_STOP*32 +: 32]     = 32'h0;
-  wire [31:0] grd = (wb_adr_i[6:5] == 2'b00) ? gwords[{wb_adr_i[4:2], 5'd0} +: 32] : 32'h0;
-  // Axis blocks: staging words 0..NW-1, CMD (reads 0), STATUS, ERR, POS_LO, POS_HI, config
-  // words, then zeros up to word 31 (each word assigned once at its index: a gap or an overlap
-  // is a lint error). Axis k's value is ard[k*32 +: 32]; slots NAXES..7 read 0.
-  wire [8*32-1:0] ard;
-  generate
-    for (g = 0; g < 8; g = g + 1) begin : g_rd
-      if (g < NAXES) begin : g_axis
-        wire [32*32-1:0] words;
-        assign words[0 +: MW]               = stg_q[g*MW +: MW];
-        assign words[W_CMD*32 +: 32]        = 32'h0;
-        assign words[W_STATUS*32 +: 32]     = {26'd0, 2'd2 - cnt_q[g*2 +: 2], run_q[g],
-                                               phase_i[g*2 +: 2], busy_i[g]};
-        assign words[W_ERR*32 +: 32]        = {29'd0, errf_q[g*3 +: 3]};
-        assign words[W_POS_LO*32 +: 32]     = pos64[g*64 +: 32];
-        assign words[W_POS_HI*32 +: 32]     = poshi_q[g*32 +: 32];
-        assign words[W_CFG*32 +: NC*32]     = cfg_q[g*NC*32 +: NC*32];
-        assign words[32*32-1:(W_CFG+NC)*32] = {((32-W_CFG-NC)*32){1'b0}};
-        assign ard[g*32 +: 32] = words[{wb_adr_i[6:2], 5'd0} +: 32];
-      end else begin : g_none
-        assign ard[g*32 +: 32] = 32'h0;
+  assign gwords[G_INFO0*32 +: 32]    = {DFRAC_W[7:0], STEP_W[7:0], ACC_W[7:0], 8'd64};
+  assign gwords[G_INFO1*32 +: 32]    = {8'd8, 8'd5, POS_W[7:0], PULSE_W[7:0]};
+  assign gwords[16*32-1:10*32]       = {(6*32){1'b0}};
+  wire [31:0] grd = (widx[4] == 1'b0) ? gwords[{widx[3:0], 5'd0} +: 32] : 32'h0;
+  // Axis blocks: STATUS, ERR, POS_LO, POS_HI (words 18..21) from flip-flops, selected field
+  // by field over the axes (one small multiplexer per field, not one per word of every axis);
+  // the other words read through the memory or 0.
+  reg  [5:0]     r_status;
+  reg  [2:0]     r_err;
+  reg  [31:0]    r_pos;
+  reg  [PHW-1:0] r_poshi;
+  integer        m;
+  always @* begin
+    r_status = 6'd0; r_err = 3'd0; r_pos = 32'd0; r_poshi = {PHW{1'b0}};
+    for (m = 0; m < NAXES; m = m + 1)
+      if ({29'd0, ak} == m) begin
+        r_status = {2'd2 - qn_i[m*2 +: 2], run_i[m], phase_i[m*2 +: 2], busy_i[m]};
+        r_err = errf_q[m*3 +: 3];
+        r_pos = pos_lo[m*32 +: 32];
+        r_poshi = poshi_q[m*PHW +: PHW];
       end
+  end
+  wire [31:0] r_hi;
+  generate
+    if (POS_W > 32) begin : g_hi_wide
+      if (POS_W < 64) begin : g_ext
+        assign r_hi = {{(64-POS_W){r_poshi[PHW-1]}}, r_poshi};
+      end else begin : g_full
+        assign r_hi = r_poshi;
+      end
+    end else begin : g_hi_sign
+      assign r_hi = {32{r_poshi[0]}};
     end
   endgenerate
-  wire [31:0] axn   = blk - 32'd2;            // axis number of an axis block
-  wire        a_hit = (blk >= 32'd2) && (axn < NAXES);
-  wire [31:0] rdata = g_hit ? grd : a_hit ? ard[{axn[2:0], 5'd0} +: 32] : 32'h0;
+  wire [31:0] ard = (widx == W_STATUS) ? {26'd0, r_status} :
+                    (widx == W_ERR)    ? {29'd0, r_err} :
+                    (widx == W_POS_LO) ? r_pos :
+                    (widx == W_POS_HI) ? r_hi : 32'h0;
+
+  // ---- loader microprogram: staging word read at step j ----
+  function [4:0] ld_src(input [5:0] j, input ve_zero);
+    case (j)
+      6'd0:  ld_src = W_DIR;
+      6'd1:  ld_src = W_STEPS;
+      6'd2:  ld_src = W_ACC_STEPS;
+      6'd3:  ld_src = W_DEC_STEP;
+      6'd4:  ld_src = W_DEC_FRAC;
+      6'd5, 6'd9, 6'd13, 6'd17:  ld_src = W_V_MAX;
+      6'd7, 6'd11, 6'd15, 6'd19: ld_src = W_V_MAX + 5'd1;
+      6'd6:  ld_src = W_V_START;
+      6'd8:  ld_src = W_V_START + 5'd1;
+      6'd10: ld_src = W_V_END;
+      6'd12: ld_src = W_V_END + 5'd1;
+      6'd14: ld_src = W_V_DEC;
+      6'd16: ld_src = W_V_DEC + 5'd1;
+      6'd18: ld_src = W_DEC;
+      6'd20: ld_src = W_DEC + 5'd1;
+      6'd21: ld_src = W_ACC;
+      6'd22: ld_src = W_ACC + 5'd1;
+      6'd23: ld_src = ve_zero ? W_DEC : W_V_END;
+      default: ld_src = ve_zero ? W_DEC + 5'd1 : W_V_END + 5'd1;
+    endcase
+  endfunction
+  // Slot word written with the data of step j: {valid, bank, offset}.
+  function [5:0] ld_dst(input [5:0] j);
+    case (j)
+      6'd1:  ld_dst = {1'b1, 2'd0, 3'd2};   // STEPS
+      6'd2:  ld_dst = {1'b1, 2'd1, 3'd0};   // ACC_STEPS
+      6'd3:  ld_dst = {1'b1, 2'd2, 3'd6};   // DEC_STEP
+      6'd4:  ld_dst = {1'b1, 2'd3, 3'd4};   // DEC_FRAC, aligned
+      6'd5:  ld_dst = {1'b1, 2'd3, 3'd0};   // V_MAX lo
+      6'd6:  ld_dst = {1'b1, 2'd0, 3'd0};   // V_START lo
+      6'd7:  ld_dst = {1'b1, 2'd3, 3'd1};   // V_MAX hi
+      6'd8:  ld_dst = {1'b1, 2'd0, 3'd1};   // V_START hi
+      6'd14: ld_dst = {1'b1, 2'd2, 3'd4};   // V_DEC lo
+      6'd16: ld_dst = {1'b1, 2'd2, 3'd5};   // V_DEC hi
+      6'd18: ld_dst = {1'b1, 2'd2, 3'd2};   // ~DEC lo
+      6'd20: ld_dst = {1'b1, 2'd2, 3'd3};   // ~DEC hi
+      6'd21: ld_dst = {1'b1, 2'd2, 3'd0};   // ACC lo
+      6'd22: ld_dst = {1'b1, 2'd2, 3'd1};   // ACC hi
+      6'd23: ld_dst = {1'b1, 2'd3, 3'd2};   // FLOOR lo
+      6'd24: ld_dst = {1'b1, 2'd3, 3'd3};   // FLOOR hi
+      default: ld_dst = 6'd0;
+    endcase
+  endfunction
+
+  // ---- memory port of the bus engine (bus cycles) ----
+  // The word of a staging/configuration operation: bank, word, implemented bits.
+  wire        mw_cfg = (op_q == OP_CRD) || (op_q == OP_CWR);
+  wire [1:0]  mw_bank = mw_cfg ? 2'd3 : stg_bank(owd_q);
+  wire [4:0]  mw_word = mw_cfg ? owd_q : stg_word(owd_q);
+  wire [31:0] mw_mask = mw_cfg ? cfg_mask(owd_q[2:0]) : stg_mask(owd_q);
+  wire [31:0] osel_mask = {{8{osel_q[3]}}, {8{osel_q[2]}}, {8{osel_q[1]}}, {8{osel_q[0]}}};
+  reg         cfg_we;                          // the merged word also goes to the live register
+  reg         m_re, m_init;
+  reg  [1:0]  m_rbank;
+  reg  [7:0]  m_raddr, m_waddr;
+  reg  [3:0]  m_we;
+  reg  [31:0] m_wdata;
+
+  // Loader commit: the slot flags from the checks.
+  wire l_vm_z = lz_q[4] & lz_q[5], l_vs_z = lz_q[6] & lz_q[7], l_ve_z = lz_q[8] & lz_q[9];
+  wire l_dec_z = lz_q[10] & lz_q[11], l_acc_z = lz_q[12] & lz_q[13];
+  wire l_decel_now = lz_q[2] & lz_q[3];
+  wire l_empty = ~ljog_q & lz_q[0];
+  wire l_bad_jog = l_vm_z | lg_q[2] | (l_vs_z & l_acc_z) | l_dec_z;
+  wire l_bad_mv = l_vm_z | lg_q[2] | lg_q[3] | (l_ve_z & lg_q[5]) | lg_q[4] | lg_q[0] | lg_q[1] |
+                  (l_ve_z & l_dec_z) | (~l_decel_now & l_vs_z & (l_acc_z | lz_q[1]));
+  wire l_bad = ~l_empty & (ljog_q ? l_bad_jog : l_bad_mv);
+  wire [1:0] l_init = ljog_q ? (l_acc_z ? PH_CRUISE : PH_ACCEL) :
+                      l_decel_now ? PH_DECEL : (~lz_q[1] ? PH_ACCEL : PH_CRUISE);
+  wire [6:0] l_flags = {l_dec_z, l_init, ldir_q, ljog_q, l_empty, l_bad};
 
   integer k, i;
-  reg        hit, push, overrun, ok_push, estop_rise;
-  reg [1:0]  cnt;
+  reg        hit, overrun, estop_rise, push_commit, drop;
   reg [2:0]  eset;
-  reg [31:0] w;
+  reg [1:0]  qv;
+  reg [5:0]  pdst;
+  reg [4:0]  psrc;
+  reg        cmp;                             // borrow of held - data (- borrow): data > held
+  reg [31:0] cmp_unused;
+  reg [31:0] ldw;
 
   always @(*) begin
-    stg_d = stg_q;  cfg_d = cfg_q;  s0_d = s0_q;  s1_d = s1_q;
-    hp_d = hp_q;
-    cnt_d = cnt_q;  run_d = run_q;  errf_d = errf_q;  poshi_d = poshi_q;
+    cfg_d = cfg_q;  errf_d = errf_q;  poshi_d = poshi_q;
     irq_en_d = irq_en_q;  pend_d = pend_q;
-    start_cmd_d = {NAXES{1'b0}};
     abort_cmd_d = {NAXES{1'b0}};
-    stop_cmd_d = {NAXES{1'b0}};
-    i = 0;
+    op_d = op_q; oax_d = oax_q; owd_d = owd_q; odat_d = odat_q; oiss_d = oiss_q;
+    ocnt_d = ocnt_q; otail_d = otail_q; ocan_d = ocan_q; osel_d = osel_q;
+    lh_d = lh_q; lb_d = lb_q; lz_d = lz_q; lg_d = lg_q; ljog_d = ljog_q; ldir_d = ldir_q;
+    ack_d = 1'b0;
+    dat_d = 32'h0;
+    cfg_we = 1'b0;
+    push_commit = 1'b0;
+    overrun = 1'b0;
+    cmp = 1'b0; cmp_unused = 32'd0; ldw = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
 
     // ---- global registers ----
     estop_rise = es2_q & ~estop_q;
     estop_d    = es2_q | (estop_q & ~(wr & g_hit & (widx == G_GSTATUS) & wdat[0]));
-    if (g_hit) begin
-      if (wr) begin
-        if (widx == G_START)    start_cmd_d = wdat[NAXES-1:0];
-        if (widx == G_ABORT)    abort_cmd_d = wdat[NAXES-1:0];
-        if (widx == G_STOP)     stop_cmd_d = wdat[NAXES-1:0];
-        if (widx == G_IRQ_EN)   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
-        if (widx == G_IRQ_PEND) pend_d = pend_q & ~wdat;
+    if (req) begin
+      ack_d = 1'b1;
+      if (g_hit) begin
+        if (rd) dat_d = grd;
+        if (wr && widx == G_ABORT)    abort_cmd_d = wdat[NAXES-1:0];
+        if (wr && widx == G_IRQ_EN)   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
+        if (wr && widx == G_IRQ_PEND) pend_d = pend_q & ~wdat;
+      end else if (a_hit) begin
+        if (rd) dat_d = ard;
+        if (widx < NW || (widx >= W_CFG && widx < W_CFG_END)) begin
+          // Staging word or configuration: a memory operation (configuration writes update the
+          // live register when the merged word is written to its mirror).
+          ack_d = 1'b0;
+          op_d = (widx < NW) ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
+          oax_d = ak;
+          owd_d = (widx < NW) ? widx : widx - W_CFG;
+          odat_d = wb_dat_i;
+          osel_d = wb_sel_i;
+          oiss_d = 1'b0;
+          ocnt_d = 6'd0;
+        end
+        if (wr && widx == W_CMD && wdat[0]) begin
+          drop = estop_q | abort8[ak];
+          qv = qn_i[ak*2 +: 2];
+          if (!drop && qv == 2'd2) begin
+            overrun = 1'b1;
+          end else if (!drop) begin
+            ack_d = 1'b0;
+            op_d = OP_PUSH;
+            oax_d = ak;
+            ocnt_d = 6'd0;
+            otail_d = (qv == 2'd0) ? inc3(act_i[ak*2 +: 2]) : inc3(inc3(act_i[ak*2 +: 2]));
+            ocan_d = flush8[ak];
+          end
+        end
+      end else if (rd) begin
+        dat_d = 32'h0;
       end
     end
+
+    // ---- the bus engine: bookkeeping at the bus cycles (the memory port itself is driven from
+    // registers, see "memory port" below) ----
+    case (op_q)
+      OP_INIT: begin
+        if (bus_go) begin
+          owd_d = owd_q + 5'd1;
+          if (owd_q == 5'd7) begin
+            owd_d = 5'd0;
+            oax_d = oax_q + 3'd1;
+            if ({29'd0, oax_q} == NAXES - 1) op_d = OP_IDLE;
+          end
+        end
+      end
+      OP_SRD, OP_CRD, OP_SWR, OP_CWR: begin
+        // Read the word at the first bus cycle; a read acks with its data two cycles later, a
+        // write merges it (byte enables, implemented bits) and writes it at the next bus cycle.
+        if (bus_go && !oiss_q) oiss_d = 1'b1;
+        if (data_cyc && oiss_q && ocnt_q == 6'd0) begin
+          if (op_q == OP_SRD || op_q == OP_CRD) begin
+            ack_d = 1'b1;
+            dat_d = bus_rdata_i;
+            op_d = OP_IDLE;
+          end else begin
+            odat_d = ((bus_rdata_i & ~osel_mask) | (odat_q & osel_mask)) & mw_mask;
+            ocnt_d = 6'd1;
+          end
+        end
+        if (bus_go && oiss_q && ocnt_q == 6'd1) begin
+          cfg_we = (op_q == OP_CWR);
+          ack_d = 1'b1;
+          op_d = OP_IDLE;
+          ocnt_d = 6'd0;
+        end
+      end
+      OP_PUSH: begin
+        if (flush8[oax_q]) ocan_d = 1'b1;
+        if (bus_go) begin
+          if (ocnt_q == LOADER_STEPS) begin
+            push_commit = pcommit_q;
+            ack_d = 1'b1;
+            op_d = OP_IDLE;
+          end
+          ocnt_d = ocnt_q + 6'd1;
+        end
+        if (proc_cyc && ocnt_q != 6'd0) begin
+          // The data of step ocnt - 1 (read three cycles ago, registered): checks, then the
+          // word to write at the next bus cycle.
+          ldw = rdq_q;
+          {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q};
+          case (ocnt_q - 6'd1)
+            6'd0: begin ljog_d = ldw[1]; ldir_d = ldw[0]; end
+            6'd1: begin lh_d = ldw; lz_d[0] = (ldw == 32'd0); end
+            6'd2: begin lg_d[0] = cmp; lz_d[1] = (ldw == 32'd0); end
+            6'd3: begin lg_d[1] = cmp; lz_d[2] = (ldw == 32'd0); end
+            6'd4: begin
+              lz_d[3] = (ldw == 32'd0);
+              ldw = (DFRAC_W >= 32) ? rdq_q : (rdq_q << (32 - DFRAC_W));
+            end
+            6'd5: begin lh_d = ldw; lz_d[4] = (ldw == 32'd0); end
+            6'd6: begin lb_d = cmp; lz_d[6] = (ldw == 32'd0); end
+            6'd7: begin lh_d = ldw; lz_d[5] = (ldw == 32'd0); end
+            6'd8: begin
+              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
+              lg_d[2] = cmp; lz_d[7] = (ldw == 32'd0);
+            end
+            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = ldw;
+            6'd10: begin lb_d = cmp; lz_d[8] = (ldw == 32'd0); end
+            6'd12: begin
+              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
+              lg_d[3] = cmp; lz_d[9] = (ldw == 32'd0);
+            end
+            6'd14: lb_d = cmp;
+            6'd16: begin
+              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
+              lg_d[4] = cmp;
+            end
+            6'd18: begin lb_d = cmp; lz_d[10] = (ldw == 32'd0); ldw = ~rdq_q; end
+            6'd20: begin
+              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
+              lg_d[5] = cmp; lz_d[11] = (ldw == 32'd0); ldw = ~rdq_q;
+            end
+            6'd21: lz_d[12] = (ldw == 32'd0);
+            6'd22: lz_d[13] = (ldw == 32'd0);
+            default: ;
+          endcase
+          odat_d = ldw;
+        end
+      end
+      default: ;
+    endcase
 
     // ---- per axis ----
     for (k = 0; k < NAXES; k = k + 1) begin
-      hit = (blk == k + 2);
-      cnt = cnt_q[k*2 +: 2];
-      push = 1'b0;
-      // bus access
-      if (hit) begin
-        for (i = 0; i < NW; i = i + 1)
-          if (wr && widx == i) stg_d[(k*NW+i)*32 +: 32] =
-            ((stg_q[(k*NW+i)*32 +: 32] & ~bmask) | wdat) & stg_mask(i);
-        for (i = 0; i < NC; i = i + 1)
-          if (wr && widx == W_CFG + i) cfg_d[(k*NC+i)*32 +: 32] =
-            ((cfg_q[(k*NC+i)*32 +: 32] & ~bmask) | wdat) & cfg_mask(i);
-        if (rd && widx == W_POS_LO) poshi_d[k*32 +: 32] = pos64[k*64+32 +: 32];
-        if (wr && widx == W_CMD) push = wdat[0];
-        if (wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
-      end
-
-      overrun = push & ~abort_w[k] & ~stop_cmd_q[k] & (cnt == 2'd2) & ~go[k];
-      ok_push = push & ~abort_w[k] & ~stop_cmd_q[k] & ~overrun;
-      if (abort_w[k] | stop_cmd_q[k]) begin
-        cnt_d[k*2 +: 2] = 2'd0;           // flush; a push in this cycle is dropped too
-        run_d[k] = 1'b0;
-      end else begin
-        if (go[k]) run_d[k] = 1'b1;
-        else if (run_q[k] & done_i[k]) run_d[k] = 1'b0;
-        // A start pops the head (the other slot becomes the head); a push writes the first
-        // free slot behind the head as it was before this edge (with a pop on the same edge
-        // and a full queue, that is the slot being popped).
-        if (go[k]) begin
-          hp_d[k] = ~hp_q[k];
-          if (!ok_push) cnt_d[k*2 +: 2] = cnt - 2'd1;
-        end else if (ok_push) begin
-          cnt_d[k*2 +: 2] = cnt + 2'd1;
-        end
-        if (ok_push) begin
-          if (hp_q[k] ^ cnt[0]) s1_d[k*MW +: MW] = stg_q[k*MW +: MW];
-          else                  s0_d[k*MW +: MW] = stg_q[k*MW +: MW];
-        end
-      end
-
-      // sticky errors and interrupts
-      eset = {estop_rise, overrun, err_i[k]};
+      hit = a_hit && ({29'd0, ak} == k);
+      if (hit && wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
+      if (hit && rd && widx == W_POS_LO) poshi_d[k*PHW +: PHW] = pos_up[k*PHW +: PHW];
+      for (i = 0; i < NC; i = i + 1)
+        if (cfg_we && pcax_q[k] && pcw_q[i])
+          cfg_d[(k*NC+i)*32 +: 32] = odat_q;
+      eset = {estop_rise, overrun & hit, refused_i[k]};
       errf_d[k*3 +: 3] = errf_d[k*3 +: 3] | eset;
       pend_d[k]      = pend_d[k] | done_i[k];
-      pend_d[8 + k]  = pend_d[8 + k] | (cnt_d[k*2 +: 2] < cnt);
+      pend_d[8 + k]  = pend_d[8 + k] | freed_i[k];
       pend_d[16 + k] = pend_d[16 + k] | (|eset);
     end
 
-    ack_d = req;
-    dat_d = rd ? rdata : 32'h0;
-    w     = pend_d & irq_en_d;
-    irq_d = |w;
+    // Registered from the pending and enable registers (one cycle after an event).
+    irq_d = |(pend_q & irq_en_q);
   end
 
+  // ---- memory port: what the bus engine does at the next bus cycle, decided in the cycle
+  // before it (g[1:0] == 2) from the registers and registered, so that no decode sits between
+  // the bus engine and the block RAMs. (An operation accepted at the edge just before a bus
+  // cycle therefore starts at the bus cycle after.) The loader writes the word its check of
+  // this cycle produces (odat_d). ----
+  always @* begin
+    m_re = 1'b0; m_init = 1'b0; m_rbank = 2'd0; m_raddr = 8'd0; m_waddr = 8'd0; m_we = 4'd0;
+    m_wdata = 32'd0; psrc = 5'd0; pdst = 6'd0;
+    case (op_q)
+      OP_INIT: begin
+        // Word owd of axis oax in every bank: staging 0, the mirror to the reset configuration.
+        m_we = 4'hF;
+        m_init = 1'b1;
+        m_waddr = {oax_q, owd_q};
+        m_wdata = (owd_q == 5'd0 || owd_q == 5'd1) ? 32'd1 : 32'd0;
+      end
+      OP_SRD, OP_CRD, OP_SWR, OP_CWR: begin
+        if (!oiss_q) begin
+          m_re = 1'b1;
+          m_rbank = mw_bank;
+          m_raddr = {oax_q, mw_word};
+        end else if (ocnt_q == 6'd1) begin
+          m_we[mw_bank] = 1'b1;
+          m_waddr = {oax_q, mw_word};
+          m_wdata = odat_q;
+        end
+      end
+      OP_PUSH: begin
+        // Read the staging word of step ocnt, write the data of step ocnt - 1.
+        if (ocnt_q < LOADER_STEPS) begin
+          psrc = ld_src(ocnt_q, lz_q[8] & lz_q[9]);
+          m_re = 1'b1;
+          m_rbank = stg_bank(psrc);
+          m_raddr = {oax_q, stg_word(psrc)};
+        end
+        if (ocnt_q == 6'd0) begin
+          m_we = 4'b0100;                              // the zero word of the slot
+          m_waddr = {oax_q, slot_word(otail_q, 3'd7)};
+          m_wdata = 32'd0;
+        end else begin
+          pdst = ld_dst(ocnt_q - 6'd1);
+          if (pdst[5]) begin
+            m_we[pdst[4:3]] = 1'b1;
+            m_waddr = {oax_q, slot_word(otail_q, pdst[2:0])};
+            m_wdata = odat_d;
+          end
+        end
+      end
+      default: ;
+    endcase
+  end
+
+  reg        pre_q, pinit_q;
+  reg        pcommit_q;                      // the loader commits at the next bus cycle
+  reg [7:0]  pcax_q;                         // a configuration write: its axis, one-hot
+  reg [NC-1:0] pcw_q;                        // ... and its word, one-hot
+  reg [1:0]  prbank_q;
+  reg [7:0]  praddr_q, pwaddr_q;
+  reg [3:0]  pwe_q;
+  reg [31:0] pwdata_q;
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      arm_q <= 1'b0;
+      pre_q <= 1'b0;
+      pwe_q <= 4'd0;
+    end else if (proc_cyc) begin
+      arm_q <= (op_q != OP_IDLE);
+      pre_q <= m_re;
+      pwe_q <= m_we;
+    end
+    if (proc_cyc) begin
+      pinit_q <= m_init;  prbank_q <= m_rbank;  praddr_q <= m_raddr;
+      pwaddr_q <= m_waddr;  pwdata_q <= m_wdata;
+      // Decided in the cycle before the commit's bus cycle, with the cancel of that cycle's edge
+      // (the engine drops the push itself if the queue is flushed at the commit's edge).
+      pcommit_q <= (op_q == OP_PUSH) && (ocnt_q == LOADER_STEPS) && !ocan_d;
+      pcax_q <= 8'd1 << oax_q;
+      pcw_q <= {{(NC-1){1'b0}}, 1'b1} << owd_q[2:0];
+    end
+  end
   always @(posedge clk_i) begin
     if (rst_i) begin
       ack_q <= 1'b0;  dat_q <= 32'h0;  irq_q <= 1'b0;
       es1_q <= 1'b0;  es2_q <= 1'b0;  estop_q <= 1'b0;
-      start_cmd_q <= {NAXES{1'b0}};  abort_cmd_q <= {NAXES{1'b0}};
-      stop_cmd_q <= {NAXES{1'b0}};
-      run_q <= {NAXES{1'b0}};  cnt_q <= {NAXES*2{1'b0}};  errf_q <= {NAXES*3{1'b0}};
-      hp_q <= {NAXES{1'b0}};
-      poshi_q <= {NAXES*32{1'b0}};  irq_en_q <= 32'h0;  pend_q <= 32'h0;
-      stg_q <= {NAXES*MW{1'b0}};  cfg_q <= {NAXES{CFG_RESET}};
+      abort_cmd_q <= {NAXES{1'b0}};
+      errf_q <= {NAXES*3{1'b0}};
+      poshi_q <= {NAXES*PHW{1'b0}};  irq_en_q <= 32'h0;  pend_q <= 32'h0;
+      cfg_q <= {NAXES{CFG_RESET}};
+      op_q <= OP_INIT;  oax_q <= 3'd0;  owd_q <= 5'd0;  oiss_q <= 1'b0;  ocnt_q <= 6'd0;
+      ocan_q <= 1'b0;
     end else begin
       ack_q <= ack_d;  dat_q <= dat_d;  irq_q <= irq_d;
       es1_q <= estop_i;  es2_q <= es1_q;  estop_q <= estop_d;
-      start_cmd_q <= start_cmd_d;  abort_cmd_q <= abort_cmd_d;
-      stop_cmd_q <= stop_cmd_d;
-      run_q <= run_d;  cnt_q <= cnt_d;  errf_q <= errf_d;  hp_q <= hp_d;
+      abort_cmd_q <= abort_cmd_d;
+      errf_q <= errf_d;
       poshi_q <= poshi_d;  irq_en_q <= irq_en_d;  pend_q <= pend_d;
-      stg_q <= stg_d;  cfg_q <= cfg_d;
+      cfg_q <= cfg_d;
+      op_q <= op_d;  oax_q <= oax_d;  owd_q <= owd_d;  oiss_q <= oiss_d;  ocnt_q <= ocnt_d;
+      ocan_q <= ocan_d;
     end
-    s0_q <= s0_d;
-    s1_q <= s1_d;
+  end
+
+  // Operation data and loader registers: not reset (read only within an operation, which
+  // writes them before reading them).
+  always @(posedge clk_i) begin
+    odat_q <= odat_d;  osel_q <= osel_d;  otail_q <= otail_d;
+    if (data_cyc) rdq_q <= bus_rdata_i;
+    lh_q <= lh_d;  lb_q <= lb_d;  lz_q <= lz_d;  lg_q <= lg_d;  ljog_q <= ljog_d;  ldir_q <= ldir_d;
   end
 
   assign wb_ack_o = ack_q;
   assign wb_dat_o = dat_q;
   assign irq_o    = irq_q;
-  assign start_o  = go;
-  assign abort_o  = abort_w;
-  assign stop_o   = stop_cmd_q;
+  // START and STOP: strobes at the request's edge; ABORT: a registered strobe for the next.
+  assign start_w_o = (wr && g_hit && widx == G_START) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign stop_w_o  = (wr && g_hit && widx == G_STOP) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign abort_o   = abort_w;
+  assign push_o       = push_commit;
+  assign push_axis_o  = oax_q;
+  assign push_flags_o = l_flags;
+  // The port registers are read by the engine on the bus cycle only; an armed operation makes
+  // them valid there.
+  assign bus_re_o    = pre_q & arm_q;
+  assign bus_rbank_o = prbank_q;
+  assign bus_raddr_o = praddr_q;
+  assign bus_we_o    = pwe_q & {4{arm_q}};
+  assign bus_waddr_o = pwaddr_q;
+  assign bus_wdata_o = pwdata_q;
+  assign bus_init_o  = pinit_q;
 
-  // Core move inputs: the queue head, fields at their word positions (64-bit values span two
-  // consecutive words, low word first).
-  wire [NAXES*MW-1:0] head;                   // the head entry of every axis
   generate
-    for (g = 0; g < NAXES; g = g + 1) begin : g_head
-      assign head[g*MW +: MW] = hp_q[g] ? s1_q[g*MW +: MW] : s0_q[g*MW +: MW];
-    end
-  endgenerate
-  generate
-    for (g = 0; g < NAXES; g = g + 1) begin : g_ports
-      assign steps_o[g*STEP_W +: STEP_W]       = head[g*MW + W_STEPS*32 +: STEP_W];
-      assign dir_o[g]                          = head[g*MW + W_DIR*32];
-      assign jog_o[g]                          = head[g*MW + W_DIR*32 + 1];
-      assign v_start_o[g*SPEED_W +: SPEED_W]   = head[g*MW + W_V_START*32 +: SPEED_W];
-      assign v_max_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_MAX*32 +: SPEED_W];
-      assign v_end_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_END*32 +: SPEED_W];
-      assign v_dec_o[g*SPEED_W +: SPEED_W]     = head[g*MW + W_V_DEC*32 +: SPEED_W];
-      assign acc_o[g*ACC_W +: ACC_W]           = head[g*MW + W_ACC*32 +: ACC_W];
-      assign dec_o[g*ACC_W +: ACC_W]           = head[g*MW + W_DEC*32 +: ACC_W];
-      assign acc_steps_o[g*STEP_W +: STEP_W]   = head[g*MW + W_ACC_STEPS*32 +: STEP_W];
-      assign dec_step_o[g*STEP_W +: STEP_W]    = head[g*MW + W_DEC_STEP*32 +: STEP_W];
-      assign dec_frac_o[g*DFRAC_W +: DFRAC_W]  = head[g*MW + W_DEC_FRAC*32 +: DFRAC_W];
+    for (g = 0; g < NAXES; g = g + 1) begin : g_cfg
       assign step_high_o[g*PULSE_W +: PULSE_W] = cfg_q[(g*NC+0)*32 +: PULSE_W];
       assign step_low_o[g*PULSE_W +: PULSE_W]  = cfg_q[(g*NC+1)*32 +: PULSE_W];
       assign dir_setup_o[g*PULSE_W +: PULSE_W] = cfg_q[(g*NC+2)*32 +: PULSE_W];

@@ -3,14 +3,14 @@
 # hexstep: regenerates every file derived from the register map rdl/hexstep.rdl.
 # Usage: scripts/gen_regs.sh [OUTDIR]   (default: the repository, as `make regs` does)
 # Writes OUTDIR/firmware/hexstep_regs.h (PeakRDL-cheader), OUTDIR/docs/REGISTERS.md
-# (PeakRDL-markdown) and OUTDIR/sim/hexstep_regs.hpp (scripts/gen_regs_hpp.py).
+# (PeakRDL-markdown) and OUTDIR/cpp_model/include/hexstep/regs.hpp (scripts/gen_regs_hpp.py).
 # The regs_up_to_date test runs it into a temp dir and diffs against the committed files.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-.}"
 py=.venv/bin/python
 peakrdl=.venv/bin/peakrdl
-mkdir -p "$out/firmware" "$out/docs" "$out/sim"
+mkdir -p "$out/firmware" "$out/docs" "$out/cpp_model/include/hexstep"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -23,10 +23,12 @@ trap 'rm -rf "$tmp"' EXIT
   echo
   echo "# hexstep registers"
   echo
-  echo "Wishbone B4 classic slave, 32-bit data, byte addresses; every request is acked once, one"
-  echo "cycle after it is presented (registered ack); there is no err and no stall signal."
-  echo "Unmapped addresses read 0. See rtl/hexstep_wb.v for the bus and queue behaviour."
+  echo "Wishbone B4 classic slave, 32-bit data, byte addresses; every request is acked once"
+  echo "(registered ack): registers in flip-flops one cycle after the request, the memory-backed"
+  echo "staging and pulse configuration words after 3 to 8 cycles, CMD.push after about 105;"
+  echo "there is no err and no stall signal. Unmapped addresses read 0. See docs/ARCHITECTURE.md"
+  echo "(\"Bus interface\", \"Moves, queue and chaining\") for the bus and queue behaviour."
   echo
   cat "$tmp/REGISTERS.md"; } > "$out/docs/REGISTERS.md"
 
-"$py" scripts/gen_regs_hpp.py rdl/hexstep.rdl "$out/sim/hexstep_regs.hpp"
+"$py" scripts/gen_regs_hpp.py rdl/hexstep.rdl "$out/cpp_model/include/hexstep/regs.hpp"

@@ -87,9 +87,9 @@ Options parse(int argc, char** argv) {
           "Runs the Verilated SoC with its UART on a pseudo-terminal and COMMAND beside it;\n"
           "{port} in ARGS is replaced by the terminal's path. Exit status: COMMAND's, or 124 if\n"
           "--max-cycles ran out, 125 if the CPU trapped, 2 for a bad command line.\n"
-          "--csv writes every STEP edge as `hexstep simulate` does; cycle 0 is the first edge on\n"
-          "which the core saw a start strobe; --job numbers the steps within moves and gives\n"
-          "the clock and polarities.\n");
+          "--csv writes every STEP edge as `hexstep simulate` does; cycle 0 is the first cycle\n"
+          "with a START write at the core (the motion begins at the next frame boundary);\n"
+          "--job numbers the steps within moves and gives the clock and polarities.\n");
       std::exit(0);
     } else {
       die("unknown option '" + a + "' (see --help)");
@@ -234,7 +234,10 @@ int main(int argc, char** argv) {
   if (posix_spawnp(&pid, cargv[0], nullptr, nullptr, cargv.data(), environ) != 0)
     die("cannot run '" + args[0] + "': " + std::strerror(errno));
 
-  // STEP edges: cycle counted from the first edge with a start strobe at the core.
+  // STEP edges: cycle counted from the first cycle with a START write at the core (its start_w
+  // strobe, the cycle the write is acted on). The core starts the axes at the next frame
+  // boundary, so the first STEP edge is 1 to 32 cycles later than from a START written at
+  // another phase of the frame: `hexstep simulate` and this differ by that constant.
   struct Ev {
     unsigned axis;
     uint64_t edge;
@@ -265,7 +268,7 @@ int main(int argc, char** argv) {
     }
     line.step(top->uart_tx_o);
     top->uart_rx_i = line.rx_level;
-    const bool started = top->rootp->hexstep_soc__DOT__u_hexstep__DOT__start != 0;
+    const bool started = top->rootp->hexstep_soc__DOT__u_hexstep__DOT__start_w != 0;
     tick();
     if (edge0 < 0 && started) edge0 = static_cast<int64_t>(cycle);
     const uint8_t step = top->step_o, dir = top->dir_o;

@@ -10,14 +10,13 @@
 // registers add about 2 x 100 flip-flops and a 64-bit LFSR to the counts (reported as
 // "wrapper" in docs/SYNTH.md); all their paths are register to register.
 module hexstep_ooc #(
-  parameter integer NAXES   = 6,
-  parameter integer SPEED_W = 64,
-  parameter integer ACC_W   = 44,
-  parameter integer STEP_W  = 32,
-  parameter integer DFRAC_W = 32,
-  parameter integer PULSE_W = 12,
-  parameter integer POS_W   = 32,
-  parameter integer OWE_W   = 2
+  parameter integer NAXES     = 6,
+  parameter integer ACC_W     = 48,
+  parameter integer STEP_W    = 32,
+  parameter integer DFRAC_W   = 32,
+  parameter integer PULSE_W   = 12,
+  parameter integer POS_W     = 32,
+  parameter         RAM_STYLE = "DELAY"
 ) (
   input  wire clk_i,
   input  wire rst_i,
@@ -45,8 +44,8 @@ module hexstep_ooc #(
   wire [NAXES-1:0] step, dir;
 
   hexstep_top #(
-    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .ADDR_W (ADDR_W)
+    .NAXES (NAXES), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W), .PULSE_W (PULSE_W),
+    .POS_W (POS_W), .ADDR_W (ADDR_W), .RAM_STYLE (RAM_STYLE)
   ) u_top (
     .clk_i (clk_i), .rst_i (rst_q),
     .wb_cyc_i (in_q[0]), .wb_stb_i (in_q[1]), .wb_we_i (in_q[2]),

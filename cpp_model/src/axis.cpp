@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// hexstep: cycle-exact model of one axis. Every line here has a counterpart in
-// rtl/hexstep_axis.v; docs/ARCHITECTURE.md describes the semantics in prose.
+// hexstep: one axis of the frame engine: the refusal rules and slot contents (the loader of rtl/hexstep_wb.v),
+// the per-tick generator (one slot of rtl/hexstep_engine.v) and the STEP/DIR output stage
+// (rtl/hexstep_pulse.v). docs/ARCHITECTURE.md describes the semantics in prose.
 #include "hexstep/axis.hpp"
 
 #include <algorithm>
@@ -71,228 +72,170 @@ uint32_t validate_move(const AxisMove& m, const Widths& w) {
   return e;
 }
 
-void AxisModel::reset() {
-  cfg_ = AxisMove{};
-  floor_ = 0;
-  run_q_ = false;
-  phase_q_ = Phase::Idle;
-  s_q_ = p_q_ = 0;
-  cnt_q_ = 0;
-  dec_first_q_ = false;
-  stop_q_ = false;
-  owed_q_ = 0;
-  step_q_ = false;
-  dir_q_ = true;
-  dir_tgt_q_ = true;
-  c_q_ = c_max();
-  d_q_ = d_max();
-  pos_q_ = 0;
-  done_q_ = err_q_ = rose_q_ = false;
+SlotMove make_slot(const AxisMove& staged, const Widths& w) {
+  SlotMove s;
+  AxisMove& m = s.m;
+  m = staged;
+  // The staging registers hold only the implemented bits of each word.
+  m.steps &= static_cast<uint32_t>(w.steps_mask());
+  m.acc_steps &= static_cast<uint32_t>(w.steps_mask());
+  m.dec_step &= static_cast<uint32_t>(w.steps_mask());
+  m.dec_frac &= static_cast<uint32_t>(w.dec_frac_mask());
+  m.acc &= w.acc_mask();
+  m.dec &= w.acc_mask();
+  s.floor = m.v_end != 0 ? m.v_end : m.dec;
+  s.dfa = w.dec_frac >= 32 ? m.dec_frac : (m.dec_frac << (32 - w.dec_frac));
+  s.empty = !m.jog && m.steps == 0;
+  s.bad = !s.empty && validate_move(m, w) != kErrNone;
+  s.dec_zero = m.dec == 0;
+  if (m.jog) {
+    s.init = m.acc != 0 ? Phase::Accel : Phase::Cruise;
+  } else {
+    s.init = (m.dec_step == 0 && m.dec_frac == 0) ? Phase::Decel
+             : (m.acc_steps != 0)                  ? Phase::Accel
+                                                   : Phase::Cruise;
+  }
+  return s;
 }
 
-int64_t AxisModel::position() const {
-  uint64_t v = pos_q_ & w_.pos_mask();
-  if (w_.pos < 64 && (v >> (w_.pos - 1)) & 1) v |= ~w_.pos_mask();
-  return static_cast<int64_t>(v);
-}
-
-void AxisModel::tick(bool start, bool abort, bool stop, const AxisMove& mv,
-                     const PulseConfig& pc) {
-  const uint32_t pm = static_cast<uint32_t>(w_.pulse_mask());
-  const uint32_t hi_t = std::max<uint32_t>(pc.step_high & pm, 1);
-  const uint32_t lo_t = std::max<uint32_t>(pc.step_low & pm, 1);
-  const uint32_t setup = pc.dir_setup & pm;
-  const uint32_t hold = pc.dir_hold & pm;
-  const bool busy_q = run_q_ || owed_q_ != 0;
-
-  // ---- pulse stage (old state) ----
-  const bool dir_change = (dir_q_ != dir_tgt_q_) && c_q_ >= hold;
-  const bool rise = !abort && owed_q_ != 0 && !step_q_ && dir_q_ == dir_tgt_q_ &&
-                    c_q_ >= hi_t + lo_t && d_q_ >= setup;
-  const bool fall = step_q_ && c_q_ >= hi_t;
-
-  // ---- generator (old state) ----
-  bool run_n = run_q_;
-  Phase phase_n = phase_q_;
-  uint64_t s_n = s_q_, p_n = p_q_;
-  uint32_t cnt_n = cnt_q_;
-  bool dec_first_n = dec_first_q_;
-  bool stop_n = stop_q_;
-  unsigned carry = 0;
-  const bool gen = run_q_ && owed_q_ != w_.owe_max();
-  if (gen) {
-    const uint64_t sm = w_.speed_mask();
-    u128 sum = u128(p_q_) + s_q_;
-    carry = static_cast<unsigned>(sum >> w_.speed_frac);
-    p_n = static_cast<uint64_t>(sum) & sm;
-    cnt_n = static_cast<uint32_t>((uint64_t(cnt_q_) + carry) & w_.steps_mask());
-    bool clamp = false;
-    switch (phase_q_) {
-      case Phase::Accel: {
-        u128 t = u128(s_q_) + cfg_.acc;
-        clamp = t >= cfg_.v_max;
-        s_n = clamp ? cfg_.v_max : static_cast<uint64_t>(t);
-        break;
-      }
-      case Phase::Decel: {
-        if (stop_q_) {
-          // Controlled stop: subtract dec, no v_dec and no floor (the move ends on borrow).
-          s_n = (s_q_ - cfg_.dec) & w_.speed_mask();
-        } else {
-          // The first decelerating tick loads v_dec (the planner's exact mean speed over that
-          // tick); later ticks subtract dec. Neither goes below the floor.
-          bool borrow = !dec_first_q_ && cfg_.dec > s_q_;
-          uint64_t t = dec_first_q_ ? cfg_.v_dec : s_q_ - cfg_.dec;
-          s_n = (borrow || t < floor_) ? floor_ : t;
-        }
-        dec_first_n = false;
-        break;
-      }
-      default:
-        break;
-    }
-    const uint64_t hi = p_n >> (w_.speed_frac - w_.dec_frac);
-    const bool dec_trig = !cfg_.jog && phase_q_ != Phase::Decel &&
-                          ((cnt_n == cfg_.dec_step && hi >= cfg_.dec_frac) ||
-                           (cnt_q_ == cfg_.dec_step && carry));
-    // Stopping: the old speed is below dec (or dec is 0): the motion is at rest.
-    const bool stop_end = stop_q_ && (cfg_.dec > s_q_ || cfg_.dec == 0);
-    const bool cnt_end = !cfg_.jog && cnt_n == cfg_.steps;
-    if (cnt_end || stop_end) {
-      run_n = false;
-      phase_n = Phase::Idle;
-    } else if (dec_trig) {
-      phase_n = Phase::Decel;
-      dec_first_n = true;
-    } else if (phase_q_ == Phase::Accel && (clamp || (!cfg_.jog && cnt_n == cfg_.acc_steps))) {
-      phase_n = Phase::Cruise;
-    }
-  }
-  // STOP: from the next tick on, decelerate by dec from the speed reached.
-  if (stop && run_n && !abort) {
-    stop_n = true;
-    phase_n = Phase::Decel;
-    dec_first_n = false;
-  }
-  unsigned owed_n = owed_q_ + carry - (rise ? 1u : 0u);
-
-  // ---- start / abort ----
-  bool done_n = false, err_n = false;
-  bool dir_tgt_n = dir_tgt_q_;
-  if (abort) {
-    run_n = false;
-    phase_n = Phase::Idle;
-    owed_n = 0;
-  } else if (start) {
-    if (busy_q) {
-      err_n = true;  // a start strobe for a busy axis is refused
+unsigned subtick(uint64_t e, uint64_t s) {
+  const uint32_t et = static_cast<uint32_t>(e >> (64 - kSubtickBits));
+  const uint32_t st = static_cast<uint32_t>(s >> (64 - kSubtickBits));
+  if (st == 0) return 0;
+  uint32_t rem = et;
+  unsigned q = 0;
+  for (int j = static_cast<int>(kFrameLog2) - 1; j >= 0; --j) {
+    const uint32_t r2 = rem << 1;
+    if (r2 >= st) {
+      q |= 1u << j;
+      rem = r2 - st;
     } else {
-      AxisMove m = mv;
-      m.v_start &= w_.speed_mask();
-      m.v_max &= w_.speed_mask();
-      m.v_end &= w_.speed_mask();
-      m.v_dec &= w_.speed_mask();
-      m.acc &= w_.acc_mask();
-      m.dec &= w_.acc_mask();
-      m.steps &= static_cast<uint32_t>(w_.steps_mask());
-      m.acc_steps &= static_cast<uint32_t>(w_.steps_mask());
-      m.dec_step &= static_cast<uint32_t>(w_.steps_mask());
-      m.dec_frac &= static_cast<uint32_t>(w_.dec_frac_mask());
-      const uint32_t e = validate_move(m, w_);
-      if ((m.steps == 0 && !m.jog) || e != kErrNone) {
-        done_n = true;
-        err_n = e != kErrNone;
-      } else {
-        cfg_ = m;
-        floor_ = m.v_end != 0 ? m.v_end : m.dec;
-        s_n = m.v_start;
-        p_n = 0;
-        cnt_n = 0;
-        run_n = true;
-        dec_first_n = true;
-        stop_n = false;
-        dir_tgt_n = m.dir;
-        if (m.jog) {
-          phase_n = m.acc != 0 ? Phase::Accel : Phase::Cruise;
-        } else {
-          phase_n = (m.dec_step == 0 && m.dec_frac == 0) ? Phase::Decel
-                    : (m.acc_steps != 0)                  ? Phase::Accel
-                                                          : Phase::Cruise;
-        }
-      }
+      rem = r2;
     }
   }
-  const bool busy_n = run_n || owed_n != 0;
-  if (busy_q && !busy_n) done_n = true;
-
-  // ---- pulse stage next state ----
-  const bool dir_n = dir_change ? dir_tgt_q_ : dir_q_;
-  const uint32_t c_n = rise ? 1u : std::min(c_q_ + 1u, c_max());
-  const uint32_t d_n = dir_change ? 1u : std::min(d_q_ + 1u, d_max());
-  const bool step_n = rise ? true : (fall ? false : step_q_);
-  if (rise) pos_q_ = (pos_q_ + (dir_q_ ? 1ull : ~0ull)) & w_.pos_mask();
-
-  run_q_ = run_n;
-  phase_q_ = phase_n;
-  s_q_ = s_n;
-  p_q_ = p_n;
-  cnt_q_ = cnt_n;
-  dec_first_q_ = dec_first_n;
-  stop_q_ = stop_n;
-  owed_q_ = owed_n;
-  dir_tgt_q_ = dir_tgt_n;
-  dir_q_ = dir_n;
-  c_q_ = c_n;
-  d_q_ = d_n;
-  step_q_ = step_n;
-  done_q_ = done_n;
-  err_q_ = err_n;
-  rose_q_ = rise;
+  return q;
 }
 
-uint64_t AxisModel::gen_quiet_ticks() const {
-  const u128 wrap = u128(1) << w_.speed_frac;
-  const uint64_t thr_dec = (!cfg_.jog && phase_q_ != Phase::Decel && cnt_q_ == cfg_.dec_step)
-                               ? (uint64_t(cfg_.dec_frac) << (w_.speed_frac - w_.dec_frac))
-                               : kNever;
+// ---- AxisGen ----
+
+void AxisGen::begin(const SlotMove& s) {
+  cfg_ = s;
+  run_ = true;
+  phase_ = s.init;
+  dec_first_ = true;
+  stop_ = false;
+  s_ = s.m.v_start;
+  p_ = 0;
+  re_ = s.m.steps;
+  ra_ = s.m.acc_steps;
+  rd_ = s.m.dec_step;
+}
+
+void AxisGen::enter_stop() {
+  if (!run_) return;
+  stop_ = true;
+  phase_ = Phase::Decel;
+  dec_first_ = false;
+}
+
+TickOut AxisGen::tick() {
+  TickOut out;
+  const AxisMove& m = cfg_.m;
+  const u128 sum = u128(p_) + s_;
+  const unsigned step = static_cast<unsigned>(sum >> 64);
+  const uint64_t pn = static_cast<uint64_t>(sum);
+  const uint32_t re_n = re_ - step, ra_n = ra_ - step, rd_n = rd_ - step;
+  uint64_t sn = s_;
+  bool clamp = false;
+  switch (phase_) {
+    case Phase::Accel: {
+      const u128 t = u128(s_) + m.acc;
+      clamp = t >= m.v_max;
+      sn = clamp ? m.v_max : static_cast<uint64_t>(t);
+      break;
+    }
+    case Phase::Decel:
+      if (stop_) {
+        sn = s_ - m.dec;  // modulo 2^64: no v_dec, no floor (the move ends on a borrow)
+      } else if (dec_first_) {
+        sn = m.v_dec < cfg_.floor ? cfg_.floor : m.v_dec;
+      } else {
+        const bool borrow = m.dec > s_;
+        const uint64_t t = s_ - m.dec;
+        sn = (borrow || t < cfg_.floor) ? cfg_.floor : t;
+      }
+      dec_first_ = false;
+      break;
+    default:
+      break;
+  }
+  const bool dfc = static_cast<uint32_t>(pn >> 32) >= cfg_.dfa;
+  const bool dec_trig = !m.jog && phase_ != Phase::Decel && ((rd_n == 0 && dfc) || (rd_ == 0 && step));
+  // Stopping: the old speed is below dec (or dec is 0): the motion is at rest.
+  const bool stop_end = stop_ && (m.dec > s_ || cfg_.dec_zero);
+  const bool cnt_end = !m.jog && re_n == 0;
+  out.step = step != 0;
+  out.q = step ? subtick(pn, s_) : 0;
+  if (cnt_end || stop_end) {
+    run_ = false;
+    phase_ = Phase::Idle;
+    out.ended = true;
+  } else if (dec_trig) {
+    phase_ = Phase::Decel;
+    dec_first_ = true;
+  } else if (phase_ == Phase::Accel && (clamp || (!m.jog && ra_n == 0))) {
+    phase_ = Phase::Cruise;
+  }
+  s_ = sn;
+  p_ = pn;
+  re_ = re_n;
+  ra_ = ra_n;
+  rd_ = rd_n;
+  return out;
+}
+
+uint64_t AxisGen::quiet_ticks() const {
+  if (!run_) return kNever;
+  const u128 wrap = u128(1) << 64;
+  const AxisMove& m = cfg_.m;
+  const uint64_t thr_dec = (!m.jog && phase_ != Phase::Decel && rd_ == 0) ? (uint64_t(cfg_.dfa) << 32) : kNever;
   uint64_t ev = kNever;  // first tick (>= 1) with an event
   auto consider_pos = [&](auto f, uint64_t limit) {
     ev = std::min(ev, first_reach(f, wrap, limit));
     if (thr_dec != kNever) ev = std::min(ev, first_reach(f, thr_dec, limit));
   };
-  switch (phase_q_) {
+  switch (phase_) {
     case Phase::Accel: {
-      const uint64_t a = cfg_.acc;
+      const uint64_t a = m.acc;
       uint64_t jc;
-      if (s_q_ >= cfg_.v_max) jc = 1;
+      if (s_ >= m.v_max) jc = 1;
       else if (a == 0) jc = kNever;
-      else jc = (cfg_.v_max - s_q_ + a - 1) / a;
+      else jc = (m.v_max - s_) / a + ((m.v_max - s_) % a != 0);  // ceil, without overflow
       ev = std::min(ev, jc);
-      consider_pos([&](uint64_t j) { return pos_accel(p_q_, s_q_, a, j); },
-                   std::min<uint64_t>(jc, kNever - 1));
+      consider_pos([&](uint64_t j) { return pos_accel(p_, s_, a, j); }, std::min<uint64_t>(jc, kNever - 1));
       break;
     }
     case Phase::Cruise:
-      consider_pos([&](uint64_t j) { return u128(p_q_) + u128(j) * s_q_; }, kNever - 1);
+      consider_pos([&](uint64_t j) { return u128(p_) + u128(j) * s_; }, kNever - 1);
       break;
     case Phase::Decel: {
-      const uint64_t d = cfg_.dec;
-      if (stop_q_) {
-        if (d == 0 || s_q_ < d) {
+      const uint64_t d = m.dec;
+      if (stop_) {
+        if (d == 0 || s_ < d) {
           ev = 1;
         } else {
-          const uint64_t je = s_q_ / d + 1;  // the tick that ends the stop (old speed < d)
+          const uint64_t je = s_ / d + 1;  // the tick that ends the stop (old speed < d)
           ev = std::min(ev, je);
-          consider_pos([&](uint64_t j) { return pos_decel(p_q_, s_q_, d, j); }, je);
+          consider_pos([&](uint64_t j) { return pos_decel(p_, s_, d, j); }, je);
         }
-      } else if (dec_first_q_ || s_q_ < floor_) {
+      } else if (dec_first_ || s_ < cfg_.floor) {
         ev = 1;
-      } else if (s_q_ == floor_ || d == 0) {
-        consider_pos([&](uint64_t j) { return u128(p_q_) + u128(j) * s_q_; }, kNever - 1);
+      } else if (s_ == cfg_.floor || d == 0) {
+        consider_pos([&](uint64_t j) { return u128(p_) + u128(j) * s_; }, kNever - 1);
       } else {
-        const uint64_t jf = (s_q_ - floor_) / d + 1;  // first tick whose result is clamped
+        const uint64_t jf = (s_ - cfg_.floor) / d + 1;  // first tick whose result is clamped
         ev = std::min(ev, jf);
-        consider_pos([&](uint64_t j) { return pos_decel(p_q_, s_q_, d, j); }, jf);
+        consider_pos([&](uint64_t j) { return pos_decel(p_, s_, d, j); }, jf);
       }
       break;
     }
@@ -302,37 +245,106 @@ uint64_t AxisModel::gen_quiet_ticks() const {
   return ev == kNever ? kNever : ev - 1;
 }
 
-uint64_t AxisModel::quiet_ticks(const PulseConfig& pc) const {
-  (void)pc;
-  if (owed_q_ != 0 || step_q_ || dir_q_ != dir_tgt_q_ || done_q_ || err_q_ || rose_q_) return 0;
-  if (!run_q_) return kNever;
-  return gen_quiet_ticks();
-}
-
-void AxisModel::skip(uint64_t k) {
-  if (k == 0) return;
-  c_q_ = static_cast<uint32_t>(std::min<uint64_t>(uint64_t(c_q_) + k, c_max()));
-  d_q_ = static_cast<uint32_t>(std::min<uint64_t>(uint64_t(d_q_) + k, d_max()));
-  if (!run_q_) return;
-  switch (phase_q_) {
+void AxisGen::skip(uint64_t k) {
+  if (k == 0 || !run_) return;
+  const AxisMove& m = cfg_.m;
+  switch (phase_) {
     case Phase::Accel:
-      p_q_ = static_cast<uint64_t>(pos_accel(p_q_, s_q_, cfg_.acc, k));
-      s_q_ += k * cfg_.acc;
+      p_ = static_cast<uint64_t>(pos_accel(p_, s_, m.acc, k));
+      s_ += k * m.acc;
       break;
     case Phase::Cruise:
-      p_q_ += k * s_q_;
+      p_ += k * s_;
       break;
     case Phase::Decel:
-      if (!stop_q_ && (s_q_ == floor_ || cfg_.dec == 0)) {
-        p_q_ += k * s_q_;
+      if (!stop_ && (s_ == cfg_.floor || m.dec == 0)) {
+        p_ += k * s_;
       } else {
-        p_q_ = static_cast<uint64_t>(pos_decel(p_q_, s_q_, cfg_.dec, k));
-        s_q_ -= k * cfg_.dec;
+        p_ = static_cast<uint64_t>(pos_decel(p_, s_, m.dec, k));
+        s_ -= k * m.dec;
       }
       break;
     default:
       break;
   }
+}
+
+// ---- PulseStage ----
+
+void PulseStage::reset() {
+  due_.clear();
+  owed_ = 0;
+  step_ = false;
+  dir_ = true;
+  tgt_ = true;
+  h_ = l_ = u_ = s_ = 0;
+  pos_ = 0;
+}
+
+int64_t PulseStage::position() const {
+  uint64_t v = pos_ & w_.pos_mask();
+  if (w_.pos < 64 && (v >> (w_.pos - 1)) & 1) v |= ~w_.pos_mask();
+  return static_cast<int64_t>(v);
+}
+
+namespace {
+bool over(uint32_t t) { return t <= 1; }
+uint32_t dec0(uint32_t t) { return t == 0 ? 0 : t - 1; }
+}  // namespace
+
+void PulseStage::edge(uint64_t cycle, bool abort, const PulseConfig& pc, uint64_t req_due, int tgt) {
+  const uint32_t pm = static_cast<uint32_t>(w_.pulse_mask());
+  // Events, all from the old state.
+  const bool dir_change = (dir_ != tgt_) && over(u_);
+  const bool rise = !abort && owed_ != 0 && !step_ && over(l_) && dir_ == tgt_ && over(s_);
+  const bool fall = step_ && over(h_);
+  unsigned due_now = 0;
+  for (uint64_t d : due_) due_now += d == cycle ? 1u : 0u;
+
+  // Next state.
+  if (abort) {
+    owed_ = 0;
+    due_.clear();
+  } else {
+    owed_ = owed_ + due_now - (rise ? 1u : 0u);
+    due_.erase(std::remove(due_.begin(), due_.end(), cycle), due_.end());
+    if (req_due != 0) due_.push_back(req_due);
+  }
+  uint32_t h = dec0(h_), l = dec0(l_), u = dec0(u_), s = dec0(s_);
+  if (rise) {
+    h = pc.step_high & pm;
+    u = pc.dir_hold & pm;
+    pos_ = (pos_ + (dir_ ? 1ull : ~0ull)) & w_.pos_mask();
+    step_ = true;
+  } else if (fall) {
+    l = pc.step_low & pm;
+    step_ = false;
+  }
+  if (dir_change) {
+    dir_ = tgt_;
+    s = pc.dir_setup & pm;
+  }
+  if (tgt >= 0) tgt_ = tgt != 0;
+  h_ = h;
+  l_ = l;
+  u_ = u;
+  s_ = s;
+}
+
+uint64_t PulseStage::quiet_cycles(uint64_t cycle, const PulseConfig& pc) const {
+  (void)pc;
+  if (owed_ != 0 || step_ || dir_ != tgt_) return 0;
+  uint64_t q = std::numeric_limits<uint64_t>::max();
+  for (uint64_t d : due_) q = std::min(q, d > cycle ? d - cycle : 0);
+  return q;
+}
+
+void PulseStage::skip(uint64_t k) {
+  auto sub = [k](uint32_t t) { return k >= t ? 0u : static_cast<uint32_t>(t - k); };
+  h_ = sub(h_);
+  l_ = sub(l_);
+  u_ = sub(u_);
+  s_ = sub(s_);
 }
 
 }  // namespace hexstep

@@ -33,17 +33,22 @@ std::string num(real x) {
 }
 }  // namespace
 
+// The registers count in ticks: one tick is one frame of kFrameCycles clock cycles.
+real tick_rate(real clock_hz) { return clock_hz / static_cast<real>(kFrameCycles); }
+
 bool speed_to_reg(real v, real f, uint64_t& reg, const Widths& w) {
-  return to_reg(v / f, w.speed_frac, w.speed_frac, reg);
+  return to_reg(v / tick_rate(f), w.speed_frac, w.speed_frac, reg);
 }
 bool accel_to_reg(real a, real f, uint64_t& reg, const Widths& w) {
-  return to_reg(a / (f * f), w.speed_frac, w.acc, reg);
+  const real ft = tick_rate(f);
+  return to_reg(a / (ft * ft), w.speed_frac, w.acc, reg);
 }
 real reg_to_speed(uint64_t reg, real f, const Widths& w) {
-  return static_cast<real>(reg) / two_pow(w.speed_frac) * f;
+  return static_cast<real>(reg) / two_pow(w.speed_frac) * tick_rate(f);
 }
 real reg_to_accel(uint64_t reg, real f, const Widths& w) {
-  return static_cast<real>(reg) / two_pow(w.speed_frac) * f * f;
+  const real ft = tick_rate(f);
+  return static_cast<real>(reg) / two_pow(w.speed_frac) * ft * ft;
 }
 real max_speed(real f, const Widths& w) { return reg_to_speed(w.speed_mask(), f, w); }
 real max_accel(real f, const Widths& w) { return reg_to_accel(w.acc_mask(), f, w); }
@@ -155,7 +160,7 @@ EncodedMove encode_ramp(const RampProfile& p, real f, const Widths& w) {
   id.vp = reg_to_speed(vpr, f, w);
   id.a = acc_phase ? aq : 0;
   id.d = dec_phase ? dq : 0;
-  id.v0 = acc_phase ? (static_cast<real>(s0) - static_cast<real>(ar) / 2) / two_pow(w.speed_frac) * f
+  id.v0 = acc_phase ? (static_cast<real>(s0) - static_cast<real>(ar) / 2) / two_pow(w.speed_frac) * tick_rate(f)
                     : id.vp;
   id.ve = dec_phase ? ve : id.vp;
   if (dec_phase && ver == 0) id.ve = 0;
@@ -186,7 +191,7 @@ EncodedMove encode_ramp(const RampProfile& p, real f, const Widths& w) {
   // dec on every later one, so its position keeps matching the ideal. For that first
   // decelerating tick to be tick j, the threshold must be crossed at tick j-1: it lies in
   // (P(j-2), P(j-1)], where P(k) is the core's exact position after k ticks.
-  const real t_x = (id.t_acc + id.t_cruise) * f;
+  const real t_x = (id.t_acc + id.t_cruise) * tick_rate(f);
   uint64_t j = static_cast<uint64_t>(std::ceil(t_x));
   if (t_x <= 0) {
     // No ramp up and no cruise: the first tick is already decelerating.
@@ -196,7 +201,9 @@ EncodedMove encode_ramp(const RampProfile& p, real f, const Widths& w) {
   if (j < 1) j = 1;
   {
     const real v = static_cast<real>(vpr) - static_cast<real>(dr) * (static_cast<real>(j) + 0.5L - t_x);
-    r.v_dec = v <= 0 ? 0 : static_cast<uint64_t>(std::llround(v));
+    // Rounded to the nearest LSB; llround would overflow above 2^63 (half a step per tick).
+    const real rv = std::floor(v + 0.5L);
+    r.v_dec = v <= 0 ? 0 : (rv >= two_pow(64) ? vpr : static_cast<uint64_t>(rv));
     if (r.v_dec > vpr) r.v_dec = vpr;
   }
   if (j <= 1) {  // decelerate from the first tick
@@ -210,7 +217,7 @@ EncodedMove encode_ramp(const RampProfile& p, real f, const Widths& w) {
   uint64_t jc = ~0ull;  // first tick whose speed update clamps at v_max
   if (!acc_phase) jc = 0;
   else if (S0 >= VM) jc = 1;
-  else jc = (VM - S0 + A - 1) / A;
+  else jc = (VM - S0) / A + ((VM - S0) % A != 0);  // ceil, without overflow
   auto P = [&](uint64_t k) -> u128 {
     if (k <= jc) return u128(k) * S0 + u128(A) * (u128(k) * (k - 1) / 2);
     const u128 pc = u128(jc) * S0 + u128(A) * (u128(jc) * (jc - 1) / 2);

@@ -199,8 +199,7 @@ json parse_json(const std::string& text) {
 
 }  // namespace
 
-const char* const kWidthNames[kNumWidths] = {"SPEED_W", "ACC_W",  "STEP_W", "DFRAC_W",
-                                             "PULSE_W", "POS_W", "OWE_W"};
+const char* const kWidthNames[kNumWidths] = {"SPEED_W", "ACC_W", "STEP_W", "DFRAC_W", "PULSE_W", "POS_W"};
 
 unsigned& width_ref(Widths& w, unsigned i) {
   switch (i) {
@@ -209,8 +208,7 @@ unsigned& width_ref(Widths& w, unsigned i) {
     case 2: return w.steps;
     case 3: return w.dec_frac;
     case 4: return w.pulse;
-    case 5: return w.pos;
-    default: return w.owe;
+    default: return w.pos;
   }
 }
 
@@ -220,14 +218,13 @@ unsigned width_of(const Widths& w, unsigned i) {
 }
 
 void width_range(const Widths& w, unsigned i, unsigned& lo, unsigned& hi) {
-  // rtl/hexstep_axis.v: SPEED_W 2..64, ACC_W and DFRAC_W 1..SPEED_W (DFRAC_W at most 32: the
-  // model and job files hold dec_frac in 32 bits), STEP_W 1..32, PULSE_W 1..30, POS_W 2..64,
-  // OWE_W 1..16.
-  static const unsigned kLo[kNumWidths] = {2, 1, 1, 1, 1, 2, 1};
-  static const unsigned kHi[kNumWidths] = {64, 64, 32, 32, 30, 64, 16};
+  // rtl/hexstep_top.v: SPEED_W is 64 (the frame engine's datapath), ACC_W 1..64, STEP_W and
+  // DFRAC_W 1..32 (one memory word), PULSE_W 1..16, POS_W 2..64.
+  (void)w;
+  static const unsigned kLo[kNumWidths] = {64, 1, 1, 1, 1, 2};
+  static const unsigned kHi[kNumWidths] = {64, 64, 32, 32, 16, 64};
   lo = kLo[i];
   hi = kHi[i];
-  if (i == 1 || i == 3) hi = std::min(hi, w.speed_frac);
 }
 
 std::string widths_error(const Widths& w) {
@@ -237,7 +234,6 @@ std::string widths_error(const Widths& w) {
     const unsigned v = width_of(w, i);
     if (v < lo || v > hi)
       return std::string(kWidthNames[i]) + ": " + range_text(lo, hi) +
-             (i == 1 || i == 3 ? " (at most SPEED_W = " + std::to_string(w.speed_frac) + ")" : "") +
              ", got " + std::to_string(v);
   }
   return "";

@@ -20,11 +20,13 @@ void check_clock(real f) {
 void check_speed(const char* flag, real v, real f, const Widths& w, bool nonzero) {
   uint64_t reg = 0;
   const real lsb = reg_to_speed(1, f, w);
-  const std::string range = nonzero ? "[" + num(lsb) + ", " + num(f) + ") steps/s (at least one register LSB,"
-                                    : "[0, " + num(f) + ") steps/s (";
+  // One step per tick (a frame of kFrameCycles clock cycles) is the register's limit.
+  const real ft = tick_rate(f);
+  const std::string range = nonzero ? "[" + num(lsb) + ", " + num(ft) + ") steps/s (at least one register LSB,"
+                                    : "[0, " + num(ft) + ") steps/s (";
   if (!speed_to_reg(v, f, reg, w) || (nonzero && reg == 0))
     fail(flag, num(v) + " steps/s cannot be represented at --clock-hz " + num(f) + ": must be in " + range +
-                   " below one step per clock cycle)");
+                   " below one step per tick of " + std::to_string(kFrameCycles) + " clock cycles)");
 }
 
 void check_accel(const char* flag, real a, real f, const Widths& w) {

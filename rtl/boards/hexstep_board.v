@@ -13,13 +13,12 @@
 // E-STOP also aborts every axis in hexstep_wb (latched until software clears it).
 module hexstep_board #(
   parameter integer NAXES      = 6,     // see hexstep_top
-  parameter integer SPEED_W    = 64,
-  parameter integer ACC_W      = 44,
+  parameter integer ACC_W      = 48,
   parameter integer STEP_W     = 32,
   parameter integer DFRAC_W    = 32,
   parameter integer PULSE_W    = 12,
   parameter integer POS_W      = 32,
-  parameter integer OWE_W      = 2,
+  parameter         RAM_STYLE  = "DELAY", // "DELAY" on iCE40, "ECP5" on ECP5 (hexstep_ram)
   parameter integer RST_CYCLES = 16,    // cycles of reset after rst_i falls, 2..2^16
   parameter integer PINS       = 6      // STEP/DIR/EN pin triples of the board, >= NAXES
 ) (
@@ -62,8 +61,8 @@ module hexstep_board #(
   );
 
   hexstep_top #(
-    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .ADDR_W (ADDR_W)
+    .NAXES (NAXES), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .ADDR_W (ADDR_W), .RAM_STYLE (RAM_STYLE)
   ) u_top (
     .clk_i (clk_i), .rst_i (board_rst),
     .wb_cyc_i (cyc), .wb_stb_i (stb), .wb_we_i (we), .wb_adr_i (adr), .wb_dat_i (wdat),

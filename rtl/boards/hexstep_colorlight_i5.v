@@ -5,13 +5,12 @@
 
 module hexstep_colorlight_i5 #(
   parameter integer NAXES   = 6,
-  parameter integer SPEED_W = 64,
-  parameter integer ACC_W   = 44,
+  parameter integer ACC_W   = 48,
   parameter integer STEP_W  = 32,
   parameter integer DFRAC_W = 32,
   parameter integer PULSE_W = 12,
   parameter integer POS_W   = 32,
-  parameter integer OWE_W   = 2,
+  parameter         RAM_STYLE = "ECP5",  // ECP5: DP16KD with its output register (hexstep_ram)
   // PLL (see hexstep_ecp5_pll), set by synth/flow.py from synth/targets.json; the defaults
   // (ecppll -i 25 -o 50) give 50 MHz.
   parameter integer PLL_CLKI_DIV     = 1,
@@ -39,8 +38,8 @@ module hexstep_colorlight_i5 #(
 
   wire miso, miso_oe, irq, estop;
   hexstep_board #(
-    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .PINS (6)
+    .NAXES (NAXES), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .RAM_STYLE (RAM_STYLE), .PINS (6)
   ) u_board (
     .clk_i (clk), .rst_i (~locked),
     .spi_sck_i (SPI_SCK), .spi_cs_n_i (SPI_CS_N), .spi_mosi_i (SPI_MOSI),
@@ -49,7 +48,9 @@ module hexstep_colorlight_i5 #(
     .estop_o (estop)
   );
 
-  assign SPI_MISO = miso_oe ? miso : 1'bz;   // released while CS_N is high (shared MISO)
+  // MISO released while CS_N is high (a shared MISO line): the ECP5 tristate output buffer
+  // OBZ (T high = high impedance), instantiated rather than inferred from 1'bz.
+  OBZ u_miso (.I (miso), .T (~miso_oe), .O (SPI_MISO));
   assign LED_N = ~estop;
   wire   unused_irq = irq;   // no spare LED on the module
 

@@ -8,13 +8,12 @@
 // synth/targets.json (computed with icepll): f_out = 12 MHz * (DIVF + 1) / (2^DIVQ * (DIVR + 1)).
 module hexstep_icebreaker #(
   parameter integer NAXES   = 6,
-  parameter integer SPEED_W = 64,
-  parameter integer ACC_W   = 44,
+  parameter integer ACC_W   = 48,
   parameter integer STEP_W  = 32,
   parameter integer DFRAC_W = 32,
   parameter integer PULSE_W = 12,
   parameter integer POS_W   = 32,
-  parameter integer OWE_W   = 2,
+  parameter         RAM_STYLE = "DELAY",  // iCE40: registered address, SB_RAM40_4K output (hexstep_ram)
   parameter integer PLL_DIVR = 0,    // defaults: 12 MHz -> 18 MHz (icepll)
   parameter integer PLL_DIVF = 47,
   parameter integer PLL_DIVQ = 5,
@@ -51,8 +50,8 @@ module hexstep_icebreaker #(
 
   wire miso, miso_oe, irq, estop;
   hexstep_board #(
-    .NAXES (NAXES), .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W), .PINS (6)
+    .NAXES (NAXES), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .RAM_STYLE (RAM_STYLE), .PINS (6)
   ) u_board (
     .clk_i (clk), .rst_i (~locked | ~BTN_N),
     .spi_sck_i (SPI_SCK), .spi_cs_n_i (SPI_CS_N), .spi_mosi_i (SPI_MOSI),

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// soc-board-fw-sim: the firmware image on a Verilated SoC board top in a reduced configuration
-// (soc/boards/hexstep_soc_icebreaker.v with its defaults: one axis, narrow widths, the small
-// PicoRV32 options, 12 KiB RAM; soc/CMakeLists.txt). A bit-level UART on the board's UART_RX /
-// UART_TX pins sends protocol frames (docs/PROTOCOL.md) and checks the replies against the
-// protocol and the core's documented widths, not against this firmware's own output:
-//   HELLO reports one axis, INFO the widths; requests for an axis the core lacks are refused with E_ARG; values
-//   wider than the core's registers are refused with E_RANGE (nothing is truncated); a
-//   constant-speed move of N steps on axis 0 gives exactly N STEP rising edges with DIR high
-//   and EN_N low, and STATUS reports position N; pins of absent axes stay low / disabled.
+// soc-board-fw-sim: the firmware image on the Verilated iCEBreaker SoC board top
+// (soc/boards/hexstep_soc_icebreaker.v with its defaults: one axis of the default widths, the
+// small PicoRV32 options, 8 KiB program RAM, 64 KiB data RAM in SPRAM; soc/CMakeLists.txt). A
+// bit-level UART on the board's UART_RX / UART_TX pins sends protocol frames (docs/PROTOCOL.md)
+// and checks the replies against the protocol and the core's documented widths (the reset
+// values of INFO0/INFO1 in the generated register header), not against this firmware's output:
+//   HELLO reports one axis, INFO the widths; requests for an axis the core lacks are refused
+//   with E_ARG; values wider than the core's registers are refused with E_RANGE (nothing is
+//   truncated); a constant-speed move of N steps on axis 0 gives exactly N STEP rising edges
+//   with DIR high and EN_N low, and STATUS reports position N; pins of absent axes stay low /
+//   disabled.
 // Exit status 0 when every check passes, 1 otherwise (each failure printed).
 #include <cstdint>
 #include <cstdio>
@@ -20,12 +22,18 @@
 
 #include "Vhexstep_soc_icebreaker.h"
 #include "hexstep_proto.h"
+#include "hexstep_regs.h"
 
 namespace {
 
 constexpr unsigned kDiv = HEXSTEP_BOARD_SIM_UART_DIV;  // cycles per bit, as the Verilated top
-// The core widths of hexstep_soc_icebreaker's defaults (synth/targets.json soc_icebreaker).
-constexpr unsigned kSpeedW = 24, kAccW = 12, kStepW = 16, kDfracW = 8, kPulseW = 8;
+// The core widths of hexstep_soc_icebreaker's defaults (synth/targets.json soc_icebreaker): the
+// default build's, as rdl/hexstep.rdl documents them.
+constexpr unsigned kSpeedW = HEXSTEP__INFO0__SPEED_W_reset, kAccW = HEXSTEP__INFO0__ACC_W_reset,
+                   kStepW = HEXSTEP__INFO0__STEP_W_reset, kDfracW = HEXSTEP__INFO0__DFRAC_W_reset,
+                   kPulseW = HEXSTEP__INFO1__PULSE_W_reset;
+static_assert(kSpeedW == 64 && kStepW == 32 && kDfracW == 32,
+              "the checks below assume values of these widths cannot be too wide for their fields");
 
 Vhexstep_soc_icebreaker* top;
 uint64_t cycle = 0;
@@ -208,7 +216,7 @@ int main(int argc, char** argv) {
   r = request(seq++, HXP_INFO, {});
   check(r.data.size() == HXP_INFO_REPLY_LEN && r.data[0] == HXP_OK && r.data[1] == kSpeedW &&
             r.data[2] == kAccW && r.data[3] == kStepW && r.data[4] == kDfracW && r.data[5] == kPulseW,
-        "INFO reports SPEED_W 24, ACC_W 12, STEP_W 16, DFRAC_W 8, PULSE_W 8");
+        "INFO reports SPEED_W 64, ACC_W 48, STEP_W 32, DFRAC_W 32, PULSE_W 12");
 
   // An axis the core lacks: MOVE, PULSE, START, STOP, ABORT refused with E_ARG.
   r = request(seq++, HXP_MOVE, move_payload(1, constant_move(10)));
@@ -222,22 +230,27 @@ int main(int argc, char** argv) {
           "command " + std::to_string(c) + " with mask 0x02 refused with E_ARG");
   }
 
-  // Values wider than the core's registers: E_RANGE, nothing stored.
+  // Values wider than the core's registers: E_RANGE, nothing stored. (Speeds, step counts and
+  // DEC_FRAC fill their protocol fields in this build; the reduced-width SoC of
+  // tests/soc/soc_e2e.sh case reduced covers those.)
   Move wide = constant_move(10);
-  wide.v_max = 1ull << kSpeedW;  // SPEED_W bits cannot hold it
-  r = request(seq++, HXP_MOVE, move_payload(0, wide));
-  check(r.data.size() >= 1 && r.data[0] == HXP_E_RANGE, "MOVE with v_max of SPEED_W+1 bits refused with E_RANGE");
-  wide = constant_move(1u << kStepW);  // steps wider than STEP_W
-  wide.dec_step = 0;
-  r = request(seq++, HXP_MOVE, move_payload(0, wide));
-  check(r.data.size() >= 1 && r.data[0] == HXP_E_RANGE, "MOVE with steps of STEP_W+1 bits refused with E_RANGE");
-  wide = constant_move(10);
   wide.acc = 1ull << kAccW;
   r = request(seq++, HXP_MOVE, move_payload(0, wide));
   check(r.data.size() >= 1 && r.data[0] == HXP_E_RANGE, "MOVE with acc of ACC_W+1 bits refused with E_RANGE");
+  wide = constant_move(10);
+  wide.dec = ~0ull;
+  r = request(seq++, HXP_MOVE, move_payload(0, wide));
+  check(r.data.size() >= 1 && r.data[0] == HXP_E_RANGE, "MOVE with dec of 64 bits refused with E_RANGE");
   std::vector<uint8_t> pulse_wide = {0, 0, static_cast<uint8_t>(1u << (kPulseW - 8)), 2, 0, 2, 0, 2, 0, 0};
   r = request(seq++, HXP_PULSE, pulse_wide);  // step_high = 2^PULSE_W
   check(r.data.size() >= 1 && r.data[0] == HXP_E_RANGE, "PULSE with step_high of PULSE_W+1 bits refused with E_RANGE");
+  // The largest values that fit are accepted (and flushed again by ABORT).
+  wide = constant_move(10);
+  wide.acc = (1ull << kAccW) - 1;
+  r = request(seq++, HXP_MOVE, move_payload(0, wide));
+  check(r.data.size() == 2 && r.data[0] == HXP_OK, "MOVE with acc of ACC_W bits accepted");
+  r = request(seq++, HXP_ABORT, {0x01});
+  check(r.data.size() == 1 && r.data[0] == HXP_OK, "ABORT axis 0");
 
   // A move that fits: exactly N steps, positive direction, driver enabled.
   constexpr uint32_t kN = 37;

@@ -12,17 +12,18 @@
 // (after a 2-flop synchroniser); E-STOP also aborts every axis in hexstep_top (latched until the
 // host's CLEAR). Pins k >= NAXES: STEP/DIR low, EN_N high.
 module hexstep_soc_board #(
-  parameter integer RAM_WORDS  = 4096,  // see hexstep_soc
+  parameter integer RAM_WORDS  = 2048,  // see hexstep_soc
+  parameter integer DATA_WORDS = 2048,
+  parameter [0:0]   DATA_SPRAM = 0,
   parameter         INIT_FILE  = "",
   parameter integer UART_DIV   = 868,
   parameter integer NAXES      = 6,
-  parameter integer SPEED_W    = 64,
-  parameter integer ACC_W      = 44,
+  parameter integer ACC_W      = 48,
   parameter integer STEP_W     = 32,
   parameter integer DFRAC_W    = 32,
   parameter integer PULSE_W    = 12,
   parameter integer POS_W      = 32,
-  parameter integer OWE_W      = 2,
+  parameter         RAM_STYLE  = "DELAY",
   parameter [0:0]   CPU_BARREL_SHIFTER  = 1,
   parameter [0:0]   CPU_TWO_STAGE_SHIFT = 1,
   parameter [0:0]   CPU_CATCH_MISALIGN  = 1,
@@ -50,9 +51,10 @@ module hexstep_soc_board #(
   );
 
   hexstep_soc #(
-    .RAM_WORDS (RAM_WORDS), .INIT_FILE (INIT_FILE), .UART_DIV (UART_DIV), .NAXES (NAXES),
-    .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W),
+    .RAM_WORDS (RAM_WORDS), .DATA_WORDS (DATA_WORDS), .DATA_SPRAM (DATA_SPRAM),
+    .INIT_FILE (INIT_FILE), .UART_DIV (UART_DIV), .NAXES (NAXES),
+    .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .RAM_STYLE (RAM_STYLE),
     .CPU_BARREL_SHIFTER (CPU_BARREL_SHIFTER), .CPU_TWO_STAGE_SHIFT (CPU_TWO_STAGE_SHIFT),
     .CPU_CATCH_MISALIGN (CPU_CATCH_MISALIGN), .CPU_CATCH_ILLINSN (CPU_CATCH_ILLINSN)
   ) u_soc (

@@ -7,17 +7,17 @@
 // Clock: the 25 MHz oscillator directly (no PLL: synth/targets.json soc_ulx3s, clock_mhz 25 =
 // osc_mhz). UART_DIV is set by synth/flow.py from the clock and the baud rate of targets.json.
 module hexstep_soc_ulx3s #(
-  parameter integer RAM_WORDS = 4096,
+  parameter integer RAM_WORDS = 2048,  // program RAM, 8 KiB
+  parameter integer DATA_WORDS = 2048, // data RAM, 8 KiB
   parameter         INIT_FILE = "",
   parameter integer UART_DIV  = 217,   // 25 MHz / 115200
   parameter integer NAXES     = 6,
-  parameter integer SPEED_W   = 64,
-  parameter integer ACC_W     = 44,
+  parameter integer ACC_W     = 48,
   parameter integer STEP_W    = 32,
   parameter integer DFRAC_W   = 32,
   parameter integer PULSE_W   = 12,
   parameter integer POS_W     = 32,
-  parameter integer OWE_W     = 2,
+  parameter         RAM_STYLE = "ECP5",   // DP16KD with its output register (hexstep_ram)
   parameter [0:0]   CPU_BARREL_SHIFTER  = 1,
   parameter [0:0]   CPU_TWO_STAGE_SHIFT = 1,
   parameter [0:0]   CPU_CATCH_MISALIGN  = 1,
@@ -36,9 +36,10 @@ module hexstep_soc_ulx3s #(
 
   wire irq, estop, trap;
   hexstep_soc_board #(
-    .RAM_WORDS (RAM_WORDS), .INIT_FILE (INIT_FILE), .UART_DIV (UART_DIV), .NAXES (NAXES),
-    .SPEED_W (SPEED_W), .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
-    .PULSE_W (PULSE_W), .POS_W (POS_W), .OWE_W (OWE_W),
+    .RAM_WORDS (RAM_WORDS), .DATA_WORDS (DATA_WORDS), .DATA_SPRAM (1'b0),
+    .INIT_FILE (INIT_FILE), .UART_DIV (UART_DIV), .NAXES (NAXES),
+    .ACC_W (ACC_W), .STEP_W (STEP_W), .DFRAC_W (DFRAC_W),
+    .PULSE_W (PULSE_W), .POS_W (POS_W), .RAM_STYLE (RAM_STYLE),
     .CPU_BARREL_SHIFTER (CPU_BARREL_SHIFTER), .CPU_TWO_STAGE_SHIFT (CPU_TWO_STAGE_SHIFT),
     .CPU_CATCH_MISALIGN (CPU_CATCH_MISALIGN), .CPU_CATCH_ILLINSN (CPU_CATCH_ILLINSN)
   ) u_board (

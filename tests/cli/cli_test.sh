@@ -76,11 +76,11 @@ PLAN_CSV_HEADER=axis,profile,dir,total_steps,accel_steps,cruise_steps,decel_step
 cat >"$TMP/line6.json" <<'EOF'
 {"format": "hexstep-plan-request", "version": 1, "clock_hz": 100000000, "mode": "line",
  "axes": [
-  {"axis": 0, "steps": 400, "max_speed": 200000, "accel": 200000000},
-  {"axis": 1, "steps": -300, "max_speed": 200000, "accel": 200000000,
+  {"axis": 0, "steps": 400, "max_speed": 200000, "accel": 100000000},
+  {"axis": 1, "steps": -300, "max_speed": 200000, "accel": 100000000,
    "pulse": {"step_high": 3, "step_low": 3, "dir_setup": 2, "dir_hold": 2}},
   {"axis": 2, "distance": 0.5, "unit": "rev", "steps_per_rev": 400, "max_speed": 500, "accel": 500000},
-  {"axis": 3, "distance": -45, "unit": "deg", "steps_per_rev": 800, "max_speed": 90000, "accel": 90000000, "ratio": 2},
+  {"axis": 3, "distance": -45, "unit": "deg", "steps_per_rev": 800, "max_speed": 90000, "accel": 45000000, "ratio": 2},
   {"axis": 4, "distance": 0.25, "unit": "mm", "steps_per_rev": 400, "pitch_mm": 2, "max_speed": 1000, "accel": 1000000},
   {"axis": 5, "steps": 0, "max_speed": 1000, "accel": 1000}
  ]}
@@ -103,6 +103,12 @@ for c in $CASES; do
     check "csv generated: per-axis steps 1..300, dir 0" awk -F, '
       NR > 1 { n[$1]++; if ($2 != n[$1] || $5 != 0) exit 1 }
       END { if (n[1] != 300 || n[3] != 300 || n[5] != 300 || length(n) != 3) exit 1 }' "$TMP/gen.out"
+    # v = 2^60 is 1/16 step per tick, and a tick is 32 clock cycles: the core crosses a whole
+    # step exactly every 16 ticks (no sub-tick offset), so the edges are 512 cycles apart, and
+    # the three axes started by one START rise on the same cycles.
+    check "csv generated: steps 16 ticks = 512 cycles apart, axes in step" awk -F, '
+      NR > 1 { if ($1 in last && $3 - last[$1] != 512) exit 1; last[$1] = $3; c[$2] = c[$2] "," $3 }
+      END { for (k in c) { split(substr(c[k], 2), v, ","); if (v[1] != v[2] || v[2] != v[3]) exit 1 } }' "$TMP/gen.out"
     # A clock that does not divide a power of ten: time_s still identifies the cycle.
     sed 's/"clock_hz": 100000000/"clock_hz": 3000000/' "$TMP/gen.json" >"$TMP/clk.json"
     run clk simulate "$TMP/clk.json"
@@ -153,8 +159,14 @@ for c in $CASES; do
     expect_error badjson "malformed JSON at byte" "$TMP/badjson.json"
     make_job missing '{"steps": 300, "dir": 0, "v_start": 1, "v_max": 1, "v_end": 1, "acc": 0, "dec": 0, "v_dec": 1, "acc_steps": 0, "dec_frac": 0}' 2
     expect_error missing "axes[0].moves[0].dec_step: required field is missing; it must be an integer in [0, 4294967295]" "$TMP/missing.json"
-    make_job range "$(echo "$GOOD_MOVE" | sed 's/"acc": 0/"acc": 17592186044416/')" 0 4
-    expect_error range "axes[0].moves[0].acc: must be an integer in [0, 17592186044415]" "$TMP/range.json"
+    # ACC_W = 48: acc holds [0, 2^48 - 1].
+    make_job range "$(echo "$GOOD_MOVE" | sed 's/"acc": 0/"acc": 281474976710656/')" 0 4
+    expect_error range "axes[0].moves[0].acc: must be an integer in [0, 281474976710655] (ACC_W = 48 bits)" "$TMP/range.json"
+    # SPEED_W is 64 in every build.
+    sed 's/"clock_hz": 100000000,/"clock_hz": 100000000, "widths": {"SPEED_W": 48},/' "$TMP/range.json" >"$TMP/speedw.json"
+    expect_error speedw "widths.SPEED_W: must be an integer in [64, 64] bits, got 48" "$TMP/speedw.json"
+    sed 's/"clock_hz": 100000000,/"clock_hz": 100000000, "widths": {"OWE_W": 2},/' "$TMP/range.json" >"$TMP/owew.json"
+    expect_error owew "widths.OWE_W: unknown field" "$TMP/owew.json"
     make_job refused "$(echo "$GOOD_MOVE" | sed 's/"v_start": 1152921504606846976/"v_start": 1152921504606846977/')" 1 2
     expect_error refused "axes[0].moves[0].v_start: must be <= v_max" "$TMP/refused.json"
     make_job unknown "$(echo "$GOOD_MOVE" | sed 's/"dec_frac"/"decfrac"/')" 3
@@ -276,8 +288,8 @@ EOF
     # and (if built) the RTL, with identical output.
     engines=model
     [ "$HAVE_RTL" = 1 ] && engines="model rtl"
-    for move in "--steps -300 --max-speed 200000 --accel 2e8" \
-                "--distance 0.75 --unit rev --steps-per-rev 400 --max-speed 400 --accel 400000 --step-high 3 --step-low 2 --dir-setup 2 --dir-hold 1 --axis 4" \
+    for move in "--steps -300 --max-speed 200000 --accel 1e8" \
+                "--distance 0.75 --unit rev --steps-per-rev 400 --max-speed 400 --accel 200000 --step-high 3 --step-low 2 --dir-setup 2 --dir-hold 1 --axis 4" \
                 "--distance -2.5 --unit mm --steps-per-mm 80 --max-speed 1000 --accel 1e6 --start-speed 50 --axis 1" \
                 "--steps 250 --max-speed 100000 --accel 1e9 --time 0.004 --axis 5"; do
       # shellcheck disable=SC2086

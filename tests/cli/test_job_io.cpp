@@ -25,7 +25,7 @@ std::string range(uint64_t lo, uint64_t hi) {
   return "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
 }
 const std::string kU64 = "18446744073709551615";
-// The accepted ranges follow the register widths (SPEED_W = 64, ACC_W = 44, ... by default).
+// The accepted ranges follow the register widths (SPEED_W = 64, ACC_W = 48, ... by default).
 const std::string kSpeedRange = range(0, kW.speed_mask());
 const std::string kAccRange = range(0, kW.acc_mask());
 const std::string kStepRange = range(0, kW.steps_mask());
@@ -107,7 +107,7 @@ TEST(JobIo, RoundTripIsExactAndCanonical) {
   m.v_start = ~0ull - 1;
   m.v_max = ~0ull;  // all 64 bits, beyond double precision
   m.v_end = (1ull << 53) + 1;
-  m.acc = (1ull << 44) - 1;
+  m.acc = kW.acc_mask();  // all ACC_W bits
   m.dec = 1;
   m.v_dec = ~0ull - 2;
   m.acc_steps = 0xFFFFFFFFu;
@@ -313,8 +313,8 @@ TEST(JobIoErrors, EveryMoveFieldMissingWrongTypeAndOutOfRange) {
       {"v_start", kSpeedRange, "18446744073709551616"},
       {"v_max", kSpeedRange, "0x10000000000000000"},
       {"v_end", kSpeedRange, 18446744073709551615.0 * 2},
-      {"acc", kAccRange, 1ull << 44},
-      {"dec", kAccRange, 1ull << 44},
+      {"acc", kAccRange, kW.acc_mask() + 1},
+      {"dec", kAccRange, kW.acc_mask() + 1},
       {"v_dec", kSpeedRange, "0x10000000000000000"},
       {"acc_steps", kStepRange, 4294967296ull},
       {"dec_step", kStepRange, "4294967296"},
@@ -356,9 +356,6 @@ TEST(JobIoErrors, RangesFollowTheWidths) {
     const char* message;
   };
   const std::vector<Case> cases = {
-      {[](hexstep::Widths& w) { w.speed_frac = 48; },
-       [](json& j) { j["axes"][0]["moves"][0]["v_max"] = 1ull << 48; },
-       "axes[0].moves[0].v_max: must be an integer in [0, 281474976710655] (SPEED_W = 48 bits)"},
       {[](hexstep::Widths& w) { w.acc = 20; },
        [](json& j) { j["axes"][0]["moves"][0]["acc"] = 1ull << 20; },
        "axes[0].moves[0].acc: must be an integer in [0, 1048575] (ACC_W = 20 bits)"},
@@ -395,31 +392,32 @@ TEST(JobIoWidths, WidthsObjectSetsTheRangesAndRoundTrips) {
   json j = valid_job();
   for (auto& a : j["axes"])
     for (auto& m : a["moves"]) m = small;
-  // The iCEBreaker SoC build (synth/targets.json soc_icebreaker); OWE_W left at its default.
-  j["widths"] = {{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8},
-                 {"POS_W", 16}};
+  // A narrow board build (SPEED_W is 64 in every build, so it may be left out).
+  j["widths"] = {{"ACC_W", 40}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8}, {"POS_W", 16}};
   const Job job = hexstep::parse_job(j.dump());
-  EXPECT_EQ(job.widths.speed_frac, 24u);
-  EXPECT_EQ(job.widths.acc, 12u);
+  EXPECT_EQ(job.widths.speed_frac, 64u);
+  EXPECT_EQ(job.widths.acc, 40u);
   EXPECT_EQ(job.widths.steps, 16u);
   EXPECT_EQ(job.widths.dec_frac, 8u);
   EXPECT_EQ(job.widths.pulse, 8u);
   EXPECT_EQ(job.widths.pos, 16u);
-  EXPECT_EQ(job.widths.owe, 2u);
-  // Written with all seven fields, read back equal; a default job has no widths object.
+  // Written with all six fields, read back equal; a default job has no widths object.
   const std::string text = hexstep::write_job(job);
   const json back = json::parse(text);
-  EXPECT_EQ(back["widths"], (json{{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8},
-                                  {"PULSE_W", 8}, {"POS_W", 16}, {"OWE_W", 2}}));
+  EXPECT_EQ(back["widths"], (json{{"SPEED_W", 64}, {"ACC_W", 40}, {"STEP_W", 16}, {"DFRAC_W", 8},
+                                  {"PULSE_W", 8}, {"POS_W", 16}}));
   EXPECT_TRUE(hexstep::same_job(hexstep::parse_job(text), job));
   EXPECT_FALSE(json::parse(hexstep::write_job(hexstep::parse_job(valid_job().dump()))).contains("widths"));
   Job other = job;
-  other.widths.owe = 3;
+  other.widths.pos = 17;
   EXPECT_FALSE(hexstep::same_job(job, other));
   // Values are checked against the file's widths, not the default ones.
-  j["axes"][0]["moves"][0]["v_max"] = 1ull << 24;
-  EXPECT_HAS(error_of(j), "axes[0].moves[0].v_max: must be an integer in [0, 16777215] (SPEED_W = 24 bits)");
-  j["axes"][0]["moves"][0]["v_max"] = 1000;
+  j["axes"][0]["moves"][0]["acc"] = 1ull << 40;
+  EXPECT_HAS(error_of(j), "axes[0].moves[0].acc: must be an integer in [0, 1099511627775] (ACC_W = 40 bits)");
+  j["axes"][0]["moves"][0]["acc"] = 0;
+  j["axes"][0]["moves"][0]["steps"] = 65536;
+  EXPECT_HAS(error_of(j), "axes[0].moves[0].steps: must be an integer in [0, 65535] (STEP_W = 16 bits)");
+  j["axes"][0]["moves"][0]["steps"] = 100;
   j["axes"][0]["pulse"]["step_high"] = 256;
   EXPECT_HAS(error_of(j), "axes[0].pulse.step_high: must be an integer in [0, 255] cycles (PULSE_W = 8 bits)");
 }
@@ -430,16 +428,24 @@ TEST(JobIoWidths, BadWidthsNameTheFieldAndRange) {
     j["widths"] = w;
     return error_of(j);
   };
-  EXPECT_HAS(err({{"SPEED_W", 65}}), "widths.SPEED_W: must be an integer in [2, 64] bits, got 65");
-  EXPECT_HAS(err({{"SPEED_W", 1}}), "widths.SPEED_W: must be an integer in [2, 64] bits, got 1");
-  EXPECT_HAS(err({{"SPEED_W", 24}, {"ACC_W", 30}}), "widths.ACC_W: must be an integer in [1, 24] bits, got 30");
+  // SPEED_W is fixed at 64 (the frame engine's datapath is two 32-bit halves).
+  EXPECT_HAS(err({{"SPEED_W", 65}}), "widths.SPEED_W: must be an integer in [64, 64] bits, got 65");
+  EXPECT_HAS(err({{"SPEED_W", 48}}), "widths.SPEED_W: must be an integer in [64, 64] bits, got 48");
+  EXPECT_HAS(err({{"ACC_W", 0}}), "widths.ACC_W: must be an integer in [1, 64] bits, got 0");
+  EXPECT_HAS(err({{"ACC_W", 65}}), "widths.ACC_W: must be an integer in [1, 64] bits, got 65");
   EXPECT_HAS(err({{"STEP_W", 33}}), "widths.STEP_W: must be an integer in [1, 32] bits, got 33");
-  EXPECT_HAS(err({{"PULSE_W", 0}}), "widths.PULSE_W: must be an integer in [1, 30] bits, got 0");
-  EXPECT_HAS(err({{"OWE_W", 17}}), "widths.OWE_W: must be an integer in [1, 16] bits, got 17");
-  // ACC_W left out keeps its default 44, which SPEED_W 24 no longer allows.
-  EXPECT_HAS(err({{"SPEED_W", 24}}), "widths.ACC_W: must be an integer in [1, 24] (at most SPEED_W = 24), got 44 (not given: its default)");
+  EXPECT_HAS(err({{"DFRAC_W", 33}}), "widths.DFRAC_W: must be an integer in [1, 32] bits, got 33");
+  EXPECT_HAS(err({{"PULSE_W", 0}}), "widths.PULSE_W: must be an integer in [1, 16] bits, got 0");
+  EXPECT_HAS(err({{"PULSE_W", 17}}), "widths.PULSE_W: must be an integer in [1, 16] bits, got 17");
+  EXPECT_HAS(err({{"POS_W", 1}}), "widths.POS_W: must be an integer in [2, 64] bits, got 1");
+  // OWE_W is gone with the old output stage: an unknown field now.
+  EXPECT_HAS(err({{"OWE_W", 2}}), "widths.OWE_W: unknown field");
   EXPECT_HAS(err({{"FOO_W", 3}}), "widths.FOO_W");
   EXPECT_HAS(err(json::array({24})), "widths: must be a widths object");
+  // The caller's default widths (a file without a widths object) are checked the same way.
+  hexstep::Widths w48;
+  w48.speed_frac = 48;
+  EXPECT_HAS(error_of(valid_job().dump(), w48), "widths: default SPEED_W: must be an integer in [64, 64], got 48");
 }
 
 TEST(JobIoErrors, MovesTheCoreWouldRefuse) {
@@ -460,7 +466,7 @@ TEST(JobIoErrors, MovesTheCoreWouldRefuse) {
   const std::string nf = move_err([](json& m) { m["v_end"] = 0; m["dec"] = 0; });
   EXPECT_HAS(nf, p + "v_end, " + p + "dec: must not both be 0");
   EXPECT_HAS(nf, "v_end to an integer in [1, v_max = 1152921504606846976]");
-  EXPECT_HAS(nf, "dec to an integer in [1, 17592186044415]");
+  EXPECT_HAS(nf, "dec to an integer in [1, " + std::to_string(kW.acc_mask()) + "]");
   const std::string ns = move_err([](json& m) { m["acc"] = 0; });
   EXPECT_HAS(ns, p + "v_start: must be an integer in [1, v_max = 1152921504606846976] when acc or acc_steps is 0");
   EXPECT_HAS(move_err([](json& m) { m["acc_steps"] = 0; }), p + "v_start: must be an integer in [1, v_max");

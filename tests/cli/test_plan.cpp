@@ -176,9 +176,15 @@ TEST_F(Plan, TriangularFromRestByHand) {
   near_rel(a["t_accel_s"].get<double>(), 1.0, 1e-9, "t_accel");
   EXPECT_EQ(a["t_cruise_s"].get<double>(), 0.0);
   EXPECT_FALSE(a.contains("warning"));
-  // Registers at 100 MHz: acceleration register = floor(a / f^2 * 2^64).
-  EXPECT_EQ(a["registers"]["acc"].get<uint64_t>(), 1844674u);
-  EXPECT_EQ(a["registers"]["dec"].get<uint64_t>(), 1844674u);
+  // Registers at 100 MHz count ticks of 32 cycles, tick_rate ft = f / 32 = 3.125 MHz:
+  // acceleration register = floor(a / ft^2 * 2^64) = floor(1000 * 1024 / 10^16 * 2^64)
+  // = floor(1888946593.07...).
+  EXPECT_EQ(a["registers"]["acc"].get<uint64_t>(), 1888946593u);
+  EXPECT_EQ(a["registers"]["dec"].get<uint64_t>(), 1888946593u);
+  // Peak speed register: floor(vp / ft * 2^64) of the peak the quantized ramps reach, at most
+  // 1000 / 3.125e6 * 2^64 = 5902958103587056.5.
+  EXPECT_LE(a["registers"]["v_max"].get<uint64_t>(), 5902958103587056u);
+  EXPECT_GE(a["registers"]["v_max"].get<uint64_t>(), 5902958103587056u - 5902958103587056u / 1000000);
 }
 
 TEST_F(Plan, TrapezoidalWithRatioByHand) {
@@ -335,47 +341,64 @@ TEST_F(Plan, AxisClockAndPulse) {
   EXPECT_EQ(a["pulse"]["step_low"], 5);
   EXPECT_EQ(a["pulse"]["dir_setup"], 7);
   EXPECT_EQ(a["pulse"]["dir_hold"], 9);
-  // 10^4 steps/s^2 at 1 MHz: floor(10^4 / 10^12 * 2^64) = floor(184467440737.09...).
-  EXPECT_EQ(a["registers"]["acc"].get<uint64_t>(), 184467440737u);
-  // The pulse rate bound is F / (high + low) = 125000 steps/s: 125000 passes, more fails.
-  const Result ok = plan({"--steps", "1000", "--start-speed", "125000", "--max-speed", "125000", "--accel", "1",
-                       "--clock-hz", "1000000", "--step-high", "3", "--step-low", "5"});
+  // 10^4 steps/s^2 at 1 MHz, ft = 31250 ticks/s: floor(10^4 / 31250^2 * 2^64)
+  // = floor(1.024e-5 * 2^64) = floor(188894659314785.8...).
+  EXPECT_EQ(a["registers"]["acc"].get<uint64_t>(), 188894659314785u);
+  // The pulse rate bound F / (high + low) binds below one step per tick (F / 32) only when
+  // high + low > 32: with 20 + 20 cycles it is 25000 steps/s at 1 MHz; 25000 passes, more fails.
+  const Result ok = plan({"--steps", "1000", "--start-speed", "25000", "--max-speed", "25000", "--accel", "1",
+                       "--clock-hz", "1000000", "--step-high", "20", "--step-low", "20"});
   EXPECT_EQ(ok.rc, 0) << ok.err;
-  expect_error({"--steps", "1000", "--start-speed", "125001", "--max-speed", "125001", "--accel", "1",
+  expect_error({"--steps", "1000", "--start-speed", "25001", "--max-speed", "25001", "--accel", "1",
+                "--clock-hz", "1000000", "--step-high", "20", "--step-low", "20"},
+               2, {"--max-speed", "pulse stage", "[0, 25000] steps/s"});
+  // With 3 + 5 cycles (125000 steps/s) the tick is the bound: a speed register holds less than
+  // one step per tick, 31250 steps/s at 1 MHz.
+  const Result tick_ok = plan({"--steps", "1000", "--start-speed", "31249", "--max-speed", "31249", "--accel", "1",
+                               "--clock-hz", "1000000", "--step-high", "3", "--step-low", "5"});
+  EXPECT_EQ(tick_ok.rc, 0) << tick_ok.err;
+  expect_error({"--steps", "1000", "--start-speed", "31250", "--max-speed", "31250", "--accel", "1",
                 "--clock-hz", "1000000", "--step-high", "3", "--step-low", "5"},
-               2, {"--max-speed", "[0, 125000] steps/s"});
+               2, {"--start-speed", "cannot be represented", "[0, 31250) steps/s"});
 }
 
-// --widths: registers for a narrower core build (the iCEBreaker SoC's), computed by hand with
-// 2^SPEED_W = 2^24 at 12 MHz: speed = floor(v / f * 2^24), acceleration = floor(a / f^2 * 2^24).
+// --widths: registers for a narrower core build, computed by hand at 12 MHz (ft = 375000
+// ticks/s): speed = floor(v / ft * 2^64), acceleration = floor(a / ft^2 * 2^64). SPEED_W is 64
+// in every build; ACC_W = 40 holds accelerations up to (2^40 - 1) ft^2 / 2^64 = 8381.9 steps/s^2.
 TEST_F(Plan, WidthsOfAReducedBuild) {
-  const std::string wid = "SPEED_W=24,ACC_W=12,STEP_W=16,DFRAC_W=8,PULSE_W=8,POS_W=16";
-  const std::vector<std::string> base = {"--steps", "5000", "--start-speed", "20000", "--max-speed", "1e6",
-                                         "--accel", "1e9", "--decel", "5e8", "--clock-hz", "12e6"};
+  const std::string wid = "ACC_W=40,STEP_W=16,DFRAC_W=8,PULSE_W=8,POS_W=16";
+  const std::vector<std::string> base = {"--steps", "5000", "--start-speed", "20000", "--max-speed", "1e5",
+                                         "--accel", "5000", "--decel", "2500", "--clock-hz", "12e6"};
   std::vector<std::string> args = base;
   args.insert(args.end(), {"--widths", wid});
   const json j = plan_json(args);
-  EXPECT_EQ(j["widths"], (json{{"SPEED_W", 24}, {"ACC_W", 12}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8},
-                               {"POS_W", 16}, {"OWE_W", 2}}));
+  EXPECT_EQ(j["widths"], (json{{"SPEED_W", 64}, {"ACC_W", 40}, {"STEP_W", 16}, {"DFRAC_W", 8}, {"PULSE_W", 8},
+                               {"POS_W", 16}}));
   const json& r = j["axes"][0]["registers"];
-  EXPECT_EQ(r["v_max"].get<uint64_t>(), 1398101u);  // 10^6 / 12e6 * 2^24 = 1398101.33
-  EXPECT_EQ(r["v_end"].get<uint64_t>(), 27962u);    // 2e4 / 12e6 * 2^24 = 27962.03
-  EXPECT_EQ(r["acc"].get<uint64_t>(), 116u);        // 1e9 / 1.44e14 * 2^24 = 116.51
-  EXPECT_EQ(r["dec"].get<uint64_t>(), 58u);         // 5e8 / 1.44e14 * 2^24 = 58.25
+  // 5000 steps from and to 2e4 steps/s, up at a = 5000 and down at d = 2500, stay below 1e5: the
+  // triangle peaks at sqrt((2 a d N + (a + d) v0^2) / (a + d)) = 20412.41 steps/s, register
+  // 20412.41 / 375000 * 2^64 = 1.0041135644e18 (the quantized ramps lower it by a few 1e-9).
+  const double vmax = r["v_max"].get<uint64_t>();
+  EXPECT_LE(vmax, 1004113564362176128.0);
+  EXPECT_GE(vmax, 1004113564362176128.0 * (1 - 1e-7));
+  EXPECT_EQ(r["v_end"].get<uint64_t>(), 983826350597842752u);     // 2e4 / 375000 * 2^64 (exact)
+  EXPECT_EQ(r["acc"].get<uint64_t>(), 655884233731u);             // 5000 / 375000^2 * 2^64 = 655884233731.4
+  EXPECT_EQ(r["dec"].get<uint64_t>(), 327942116865u);             // 2500 / 375000^2 * 2^64 = 327942116865.7
   EXPECT_LE(r["dec_frac"].get<uint64_t>(), 255u);
-  // The default build: no widths object (1e9 steps/s^2 is above its ACC range at 12 MHz).
-  EXPECT_FALSE(plan_json({"--steps", "5000", "--max-speed", "1e6", "--accel", "1e8", "--clock-hz", "12e6"})
-                   .contains("widths"));
+  // The default build: no widths object.
+  EXPECT_FALSE(plan_json(base).contains("widths"));
   // The job and the C header record them.
   args.insert(args.end(), {"--format", "job"});
   const Result job = plan(args);
   ASSERT_EQ(job.rc, 0) << job.err;
-  EXPECT_EQ(json::parse(job.out)["widths"]["SPEED_W"], 24);
+  EXPECT_EQ(json::parse(job.out)["widths"]["ACC_W"], 40);
   args.back() = "c";
   const Result c = plan(args);
   ASSERT_EQ(c.rc, 0) << c.err;
-  EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_SPEED_W 24\n"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_SPEED_W 64\n"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_ACC_W 40\n"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("#define HEXSTEP_PLAN_DFRAC_W 8\n"), std::string::npos) << c.out;
+  EXPECT_EQ(c.out.find("OWE_W"), std::string::npos) << c.out;
   // Ranges follow the widths; each error names the flag and the range.
   auto with = [&](std::vector<std::string> more, const std::string& w) {
     std::vector<std::string> a = base;
@@ -392,13 +415,20 @@ TEST_F(Plan, WidthsOfAReducedBuild) {
   };
   expect_error(with({"--step-high", "256"}, wid), 2, {"--step-high", "[0, 255] clock cycles (PULSE_W = 8 bits"});
   expect_error(with({"--steps", "65536"}, wid), 2, {"--steps", "[0, 65535]"});
-  // 10^6 steps/s^2 is below one LSB (8.58e6 steps/s^2) of ACC at SPEED_W 24 and 12 MHz.
-  expect_error(with({"--accel", "1e6"}, wid), 2, {"--accel", "cannot be represented"});
-  expect_error(with({}, "SPEED_W=24"), 2, {"--widths ACC_W", "[1, 24]", "got 44 (not given: its default)"});
-  expect_error(with({}, "SPEED_W=24,ACC_W=30"), 2, {"--widths ACC_W", "[1, 24]", "got 30"});
-  expect_error(with({}, "SPEED_W=65"), 2, {"--widths SPEED_W", "[2, 64]"});
-  expect_error(with({}, "SPEED_W=24,SPEED_W=30"), 2, {"--widths", "each at most once", "'SPEED_W=30'"});
+  // 10^4 steps/s^2 is above the largest ACC value (8381.9 steps/s^2) at ACC_W 40 and 12 MHz; the
+  // default ACC_W 48 takes it.
+  expect_error(with({"--accel", "1e4"}, wid), 2, {"--accel", "cannot be represented", "8381.9"});
+  EXPECT_EQ(plan(with({"--accel", "1e4"}, "STEP_W=16")).rc, 0);
+  // SPEED_W is fixed at 64: any other value names the field and its only value.
+  expect_error(with({}, "SPEED_W=24"), 2, {"--widths SPEED_W", "[64, 64]", "got 24"});
+  expect_error(with({}, "SPEED_W=65"), 2, {"--widths SPEED_W", "[64, 64]", "got 65"});
+  EXPECT_EQ(plan(with({}, "SPEED_W=64")).rc, 0);
+  expect_error(with({}, "ACC_W=65"), 2, {"--widths ACC_W", "[1, 64]", "got 65"});
+  expect_error(with({}, "PULSE_W=17"), 2, {"--widths PULSE_W", "[1, 16]", "got 17"});
+  expect_error(with({}, "ACC_W=30,ACC_W=31"), 2, {"--widths", "each at most once", "'ACC_W=31'"});
   expect_error(with({}, "FOO_W=3"), 2, {"--widths", "NAME one of SPEED_W", "'FOO_W=3'"});
+  // OWE_W was a width of the old output stage; it is not accepted any more.
+  expect_error(with({}, "OWE_W=2"), 2, {"--widths", "NAME one of SPEED_W", "'OWE_W=2'"});
   expect_error(with({}, "SPEED_W=x"), 2, {"--widths SPEED_W", "got 'x'"});
 }
 
@@ -621,11 +651,16 @@ TEST_F(Plan, CommandLineErrors) {
       {but({"--dir-hold", "5000"}), 2, {"--dir-hold: must be an integer in [0, 4095]"}},
       {but({"--format", "xml"}), 2, {"--format"}},
       // Out of range for the registers at this clock.
-      {{"--steps", "1000", "--max-speed", "1000", "--accel", "0.0001"}, 2,
-       {"--accel: 0.0001 steps/s^2 cannot be represented at --clock-hz 100000000: must be in [0.000542101086, 9.53674316e+09] steps/s^2"}},
-      {{"--steps", "1000", "--max-speed", "1000", "--accel", "1000", "--ratio", "1e8"}, 2, {"--decel:", "cannot be represented"}},
-      {{"--steps", "1000", "--max-speed", "1e-12", "--accel", "1"}, 2, {"--max-speed:", "cannot be represented", "steps/s"}},
-      {{"--steps", "1000", "--max-speed", "100", "--accel", "1e8", "--clock-hz", "1000"}, 2, {"--accel:", "--clock-hz 1000"}},
+      // At 100 MHz (ft = 3.125e6 ticks/s) accelerations hold [ft^2 / 2^64, (2^48 - 1) ft^2 / 2^64]
+      // = [5.29395592e-07, 1.49011612e8] steps/s^2 and speeds [ft / 2^64 = 1.69e-13, ft).
+      {{"--steps", "1000", "--max-speed", "1000", "--accel", "1e-7"}, 2,
+       {"--accel: 1e-07 steps/s^2 cannot be represented at --clock-hz 100000000: must be in [5.29395592e-07, 149011612] steps/s^2"}},
+      {{"--steps", "1000", "--max-speed", "1000", "--accel", "1.5e8"}, 2, {"--accel:", "cannot be represented", "149011612]"}},
+      {{"--steps", "1000", "--max-speed", "1000", "--accel", "1000", "--ratio", "1e10"}, 2, {"--decel:", "cannot be represented"}},
+      {{"--steps", "1000", "--max-speed", "1e-13", "--accel", "1"}, 2, {"--max-speed:", "cannot be represented", "[1.69406589e-13, "}},
+      {{"--steps", "1000", "--start-speed", "3.2e6", "--max-speed", "3.2e6", "--accel", "1"}, 2,
+       {"--start-speed:", "cannot be represented", "[0, 3125000) steps/s"}},
+      {{"--steps", "1000", "--max-speed", "10", "--accel", "1e8", "--clock-hz", "1000"}, 2, {"--accel:", "--clock-hz 1000"}},
       // Pulse rate: at most F / (high + low) = 50 MHz with the default 1 + 1 cycles.
       {{"--steps", "1000", "--start-speed", "6e7", "--max-speed", "6e7", "--accel", "1"}, 2,
        {"--max-speed:", "pulse stage", "[0, 50000000] steps/s"}},

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace hexstep::test {
 
@@ -26,20 +27,19 @@ EncodedMove encode(const Ramp& r, real f) {
 }
 
 namespace {
-constexpr uint64_t kP62 = 1ull << 62;
+constexpr real kF = static_cast<real>(kDefaultClockHz);
+// Physical speed and acceleration at 100 MHz of u steps per tick and u steps per tick^2.
+real per_tick(real u) { return u * tick_rate(kF); }
+real per_tick2(real u) { return u * tick_rate(kF) * tick_rate(kF); }
+constexpr real kMaxAcc = 1.0L / 65536;  // 2^(ACC_W - 64) step per tick^2, ACC_W = 48
 
-AxisMove constant_speed(uint32_t n, bool dir, uint64_t s) {
-  AxisMove m;
-  m.steps = n;
-  m.dir = dir;
-  m.v_start = m.v_max = m.v_end = s;
-  m.dec_step = n;
-  return m;
+NamedJob make(const std::string& name) {
+  return NamedJob{name, Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
 }
 
 NamedJob single(const std::string& name, const std::vector<Ramp>& ramps, unsigned axis = 0,
                 PulseConfig pc = PulseConfig{}) {
-  NamedJob j{name, Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
+  NamedJob j = make(name);
   j.job.axes[axis].pulse = pc;
   for (const Ramp& r : ramps) {
     EncodedMove e = encode(r);
@@ -48,65 +48,86 @@ NamedJob single(const std::string& name, const std::vector<Ramp>& ramps, unsigne
   }
   return j;
 }
-}  // namespace
 
-std::vector<NamedJob> directed_jobs() {
+std::vector<NamedJob> build_directed() {
   std::vector<NamedJob> v;
-  PulseConfig fast;  // defaults: 1 cycle high, 1 cycle low, no setup/hold
-  PulseConfig drv8825{190, 190, 65, 65, false, false};  // 1.9 us / 650 ns at 100 MHz
-  // Ranade 2009, Table 1: 0.2 step per update, a pulse every 5 updates.
+  const PulseConfig fast;                                 // 1 cycle high, 1 cycle low
+  const PulseConfig drv8825{190, 190, 65, 65, false, false};  // 1.9 us / 650 ns at 100 MHz
+  // Ranade 2009, Table 1: 0.2 step per update, a pulse every 5 updates (an update is a tick).
   {
-    NamedJob j{"ranade_table1", Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
-    uint64_t s = static_cast<uint64_t>(std::ceil(std::ldexp(0.2L, 64)));
-    j.job.axes[0].moves.push_back(constant_speed(5, true, s));
+    NamedJob j = make("ranade_table1");
+    const uint64_t s = static_cast<uint64_t>(std::ceil(0.2L * kTwo64));
+    j.job.axes[0].moves.push_back(cruise(5, s));
     v.push_back(j);
   }
-  v.push_back(single("triangular_rest_to_rest", {{200, true, 0, 5e6, 0, 5e8, 5e8}}));
-  v.push_back(single("trapezoid_asymmetric", {{2000, true, 1e4, 2.5e5, 5e4, 2e8, 1e8}}, 0, drv8825));
-  v.push_back(single("trapezoid_decel_4x", {{1500, false, 0, 2e5, 0, 5e7, 2e8}}, 1, drv8825));
-  v.push_back(single("triangular_nonzero_ends", {{300, true, 2e5, 5e6, 1e5, 3e9, 1e9}}, 2));
+  // Rest to rest at the largest acceleration: triangular, peak sqrt(a N).
+  v.push_back(single("triangular_rest_to_rest", {{200, true, 0, per_tick(0.9L), 0, per_tick2(0.9L * kMaxAcc),
+                                                  per_tick2(0.9L * kMaxAcc)}}));
+  // Trapezoid from and to non-zero speeds, deceleration half the acceleration, at the DRV8825's
+  // pulse timing (the speed stays below its 263 k steps/s).
+  v.push_back(single("trapezoid_asymmetric", {{1600, true, 5e4, 2.5e5, 3e4, 1.2e8, 6e7}}, 0, drv8825));
+  // Deceleration four times the acceleration, negative direction.
+  v.push_back(single("trapezoid_decel_4x", {{1000, false, 0, 2e5, 0, 3e7, 1.2e8}}, 1, drv8825));
+  // Triangular with non-zero ends, acc != dec.
+  v.push_back(single("triangular_nonzero_ends", {{400, true, 6e5, 3e6, 4e5, 1.4e8, 7e7}}, 2));
   v.push_back(single("zero_one_two_steps",
-                     {{0, true, 0, 1e6, 0, 1e9, 1e9},
-                      {1, true, 0, 1e6, 0, 1e9, 1e9},
-                      {2, false, 0, 1e6, 0, 1e9, 1e9},
-                      {1, false, 5e5, 1e6, 5e5, 1e9, 1e9}},
+                     {{0, true, 0, 1e6, 0, 1e8, 1e8},
+                      {1, true, 0, 1e6, 0, 1e8, 1e8},
+                      {2, false, 0, 1e6, 0, 1e8, 1e8},
+                      {1, false, 5e5, 1e6, 5e5, 1e8, 1e8}},
                      3, PulseConfig{4, 4, 10, 10, false, false}));
-  v.push_back(single("fastest_5M_steps_per_s", {{3000, true, 1e6, 5e6, 1e6, 9e9, 9e9}}, 4, fast));
+  // Near the one-step-per-tick limit, with ramps at both ends.
+  v.push_back(single("fastest_near_one_step_per_tick", {{3000, true, 2.6e6, per_tick(0.96L), 2.6e6, 1.4e8, 1.4e8}}, 4,
+                     fast));
   v.push_back(single("direction_changes",
-                     {{120, true, 0, 2e6, 0, 4e9, 4e9},
-                      {80, false, 0, 2e6, 0, 4e9, 4e9},
-                      {40, true, 3e5, 2e6, 3e5, 4e9, 4e9}},
+                     {{120, true, 0, 2e6, 0, 1e8, 1e8},
+                      {80, false, 0, 2e6, 0, 1e8, 1e8},
+                      {40, true, 3e5, 2e6, 3e5, 1e8, 1e8}},
                      5, PulseConfig{20, 30, 50, 60, false, false}));
-  {  // register extremes: the largest speed (pulse stage limits the rate, generator stalls)
-    NamedJob j{"max_speed_register_stall", Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
+  {  // register extremes: the largest speed (1 step per tick less one LSB: the output stage
+     // limits the rate, the generator pauses) and a pulse timing slower than the steps
+    NamedJob j = make("max_speed_register_stall");
     j.job.axes[0].pulse = fast;
-    j.job.axes[0].moves.push_back(constant_speed(50, true, ~0ull));
-    j.job.axes[1].pulse = PulseConfig{3, 5, 0, 0, true, true};
-    j.job.axes[1].moves.push_back(constant_speed(20, false, kP62));
+    j.job.axes[0].moves.push_back(cruise(50, ~0ull));
+    j.job.axes[1].pulse = PulseConfig{30, 50, 0, 0, true, true};
+    j.job.axes[1].moves.push_back(cruise(20, 1ull << 63, false));
     v.push_back(j);
   }
-  {  // the slowest speed a co-simulation can afford, and the longest pulse timing registers
-    NamedJob j{"slow_and_max_pulse", Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
-    j.job.axes[0].moves.push_back(constant_speed(3, true, (~0ull) / 200000));
+  {  // slow speeds, below the sub-tick division's resolution, and the longest pulse timing
+    NamedJob j = make("slow_and_max_pulse");
+    j.job.axes[0].moves.push_back(cruise(3, (~0ull) / 5000));
     j.job.axes[1].pulse = PulseConfig{4095, 4095, 4095, 4095, false, true};
-    j.job.axes[1].moves.push_back(constant_speed(4, true, (~0ull) / 9000));
-    j.job.axes[1].moves.push_back(constant_speed(4, false, (~0ull) / 9000));
+    j.job.axes[1].moves.push_back(cruise(4, (~0ull) / 300));
+    j.job.axes[1].moves.push_back(cruise(4, (~0ull) / 300, false));
     v.push_back(j);
   }
-  {  // six axes, six different moves, one start strobe
-    NamedJob j{"six_axes_one_strobe", Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
-    const Ramp r[kNumAxes] = {{400, true, 0, 1e6, 0, 1e9, 1e9},      {250, false, 1e4, 2e6, 1e4, 3e9, 1e9},
-                              {600, true, 0, 5e5, 0, 2e8, 8e8},       {90, false, 2e5, 3e6, 0, 9e9, 5e9},
-                              {1000, true, 5e4, 4e6, 5e4, 5e9, 5e9},  {33, true, 0, 1e6, 0, 1e8, 1e8}};
+  {  // six axes, six different moves, one START
+    NamedJob j = make("six_axes_one_start");
+    const Ramp r[kNumAxes] = {{400, true, 0, 1e6, 0, 1e8, 1e8},         {250, false, 1e5, 2e6, 1e5, 1.4e8, 5e7},
+                              {600, true, 4e5, 8e5, 4e5, 6e7, 1.2e8},    {90, false, 2e5, 3e6, 0, 1.4e8, 1e8},
+                              {1000, true, 5e5, 2.5e6, 5e5, 1.4e8, 1.4e8}, {33, true, 0, 1e6, 0, 1e8, 1e8}};
     for (unsigned a = 0; a < kNumAxes; ++a) {
       EncodedMove e = encode(r[a]);
-      j.job.axes[a].pulse = PulseConfig{10 + a, 12, 5 * a, 3 * a, a % 2 == 1, a % 3 == 1};
+      j.job.axes[a].pulse = PulseConfig{2 + a, 3, 5 * a, 3 * a, a % 2 == 1, a % 3 == 1};
       j.job.axes[a].moves.push_back(e.regs);
       j.ideal[a].push_back(e.ideal);
     }
     v.push_back(j);
   }
   return v;
+}
+}  // namespace
+
+std::vector<NamedJob> directed_jobs() {
+  static const std::vector<NamedJob> v = build_directed();
+  return v;
+}
+
+const NamedJob& directed(const std::string& name) {
+  static const std::vector<NamedJob> v = build_directed();
+  for (const NamedJob& j : v)
+    if (j.name == name) return j;
+  throw std::invalid_argument("no directed vector " + name);
 }
 
 AxisMove cruise(uint32_t steps, uint64_t speed, bool dir) {
@@ -118,18 +139,18 @@ AxisMove cruise(uint32_t steps, uint64_t speed, bool dir) {
   return m;
 }
 
-AxisMove bus_trapezoid(uint32_t steps, bool dir) {
+AxisMove trapezoid(uint32_t steps, bool dir) {
   AxisMove m;
   m.steps = steps;
   m.dir = dir;
-  m.v_start = 1ull << 58;
-  m.v_max = 1ull << 61;
-  m.acc = 1ull << 43;
-  m.dec = 1ull << 43;
-  m.v_end = 1ull << 58;
-  m.v_dec = (1ull << 61) - (1ull << 54);
-  m.acc_steps = steps / 4;
-  m.dec_step = steps - steps / 4;
+  m.v_start = 1ull << 61;
+  m.v_max = (1ull << 61) + (1ull << 54);
+  m.acc = 1ull << 47;
+  m.dec = 1ull << 47;
+  m.v_end = 1ull << 61;
+  m.v_dec = m.v_max - (m.dec >> 1);
+  m.acc_steps = steps / 2;
+  m.dec_step = steps > 32 ? steps - 16 : steps / 2;
   m.dec_frac = 0x80000000u;
   return m;
 }
@@ -139,6 +160,11 @@ uint64_t test_seed() {
   return std::random_device{}() ^ (uint64_t(std::random_device{}()) << 32);
 }
 
+uint64_t env_count(const char* name, uint64_t dflt) {
+  const char* s = std::getenv(name);
+  return s && *s ? std::strtoull(s, nullptr, 0) : dflt;
+}
+
 namespace {
 real log_uniform(std::mt19937_64& rng, real lo, real hi) {
   std::uniform_real_distribution<double> u(std::log(static_cast<double>(lo)), std::log(static_cast<double>(hi)));
@@ -146,17 +172,39 @@ real log_uniform(std::mt19937_64& rng, real lo, real hi) {
 }
 }  // namespace
 
-Ramp random_ramp(std::mt19937_64& rng) {
-  Ramp r;
-  r.steps = std::uniform_int_distribution<uint32_t>(0, 400)(rng);
-  r.dir = rng() & 1;
-  r.v_max = log_uniform(rng, 2e4, 5e6);
-  r.accel = log_uniform(rng, 3e8, 9e9);
-  r.decel = r.accel * log_uniform(rng, 0.25, 4);
-  if (r.decel > 9e9) r.decel = 9e9;
-  r.v_start = (rng() % 3 == 0) ? 0 : std::min(r.v_max, log_uniform(rng, 1e3, 5e5));
-  r.v_end = (rng() % 3 == 0) ? 0 : std::min(r.v_max, log_uniform(rng, 1e3, 5e5));
-  return r;
+Ramp random_ramp(std::mt19937_64& rng, real f) {
+  const real ft = tick_rate(f);
+  // Drawn in steps per tick (the cycle count of a move depends on these alone); moves longer
+  // than kMaxTicks are drawn again, which keeps a co-simulated move below 10^5 cycles. The
+  // speeds are drawn relative to the triangular peak sqrt(a N) of the move from rest, so that
+  // trapezoids, triangles and one-sided ramps all occur; one move in eight is a fast one
+  // (0.1 to 0.9 step per tick) whose ramps are short against its cruise.
+  constexpr real kMaxTicks = 2500;
+  for (;;) {
+    Ramp r;
+    r.dir = rng() & 1;
+    r.steps = std::uniform_int_distribution<uint32_t>(0, 400)(rng);
+    const real acc = log_uniform(rng, kMaxAcc / 32, 0.9L * kMaxAcc);
+    const real dec = std::min(acc * log_uniform(rng, 0.25L, 4), 0.9L * kMaxAcc);
+    real v0, ve, vmax;
+    if (rng() % 8 == 0) {
+      vmax = log_uniform(rng, 0.1L, 0.9L);
+      v0 = vmax * log_uniform(rng, 0.7L, 1);
+      ve = vmax * log_uniform(rng, 0.7L, 1);
+    } else {
+      const real vref = std::sqrt(acc * std::max<uint32_t>(r.steps, 1));
+      v0 = rng() % 4 == 0 ? 0 : vref * log_uniform(rng, 0.05L, 1.2L);
+      ve = rng() % 4 == 0 ? 0 : vref * log_uniform(rng, 0.05L, 1.2L);
+      Ramp t{r.steps, r.dir, v0, 1, ve, acc, dec};
+      vmax = std::min(0.9L, std::max({v0, ve, ramp_peak(t) * log_uniform(rng, 0.4L, 1.5L)}));
+    }
+    r.v_max = vmax * ft;
+    r.v_start = std::min(v0, vmax) * ft;
+    r.v_end = std::min(ve, vmax) * ft;
+    r.accel = acc * ft * ft;
+    r.decel = dec * ft * ft;
+    if (encode(r, f).ideal.duration() * ft <= kMaxTicks) return r;
+  }
 }
 
 AxisMove random_raw_move(std::mt19937_64& rng) {
@@ -165,7 +213,7 @@ AxisMove random_raw_move(std::mt19937_64& rng) {
     switch (rng() % 6) {
       case 0: return 0;
       case 1: return ~0ull >> (rng() % 3);
-      default: return (rng() >> 2) >> (rng() % 12);  // >= ~2^50: a step within ~16k ticks
+      default: return (rng() >> 1) >> (rng() % 6);  // >= ~2^57: a step within ~128 ticks
     }
   };
   m.steps = rng() % 4 == 0 ? static_cast<uint32_t>(rng() % 3) : static_cast<uint32_t>(rng() % 60);
@@ -173,8 +221,10 @@ AxisMove random_raw_move(std::mt19937_64& rng) {
   m.v_start = speed();
   m.v_max = speed();
   m.v_end = speed();
-  m.acc = rng() % 3 == 0 ? 0 : (rng() & ((1ull << 44) - 1)) >> (rng() % 8);
-  m.dec = rng() % 3 == 0 ? 0 : (rng() & ((1ull << 44) - 1)) >> (rng() % 8);
+  // Accelerations of at least 2^-19 step/tick^2: a move from rest to its first steps within a
+  // few thousand ticks.
+  m.acc = rng() % 3 == 0 ? 0 : ((rng() & ((1ull << 48) - 1)) >> (rng() % 3)) | (1ull << 45);
+  m.dec = rng() % 3 == 0 ? 0 : ((rng() & ((1ull << 48) - 1)) >> (rng() % 3)) | (1ull << 45);
   m.v_dec = speed();
   // A zero floor is either refused (no deceleration either) or replaced by a real end speed:
   // a floor of `dec` alone would crawl for millions of cycles in a co-simulation.
@@ -209,11 +259,11 @@ PulseConfig random_pulse(std::mt19937_64& rng) {
 
 NamedJob random_job(std::mt19937_64& rng, unsigned moves_per_axis, bool raw_too) {
   NamedJob j{"random", Job{}, std::vector<std::vector<IdealProfile>>(kNumAxes)};
-  // The same physical moves at the clocks users run: slower clocks also mean fewer cycles.
+  // The same moves in ticks at the clocks users run: the register values differ, the cycle
+  // counts do not.
   static const real clocks[] = {12e6, 25e6, 48e6, 100e6};
   const real f = clocks[rng() % 4];
   j.job.clock_hz = static_cast<uint64_t>(f);
-  const real a_lim = 0.9L * max_accel(f);
   for (unsigned a = 0; a < kNumAxes; ++a) {
     PulseConfig p;
     p.step_high = 1 + rng() % 40;
@@ -228,16 +278,19 @@ NamedJob random_job(std::mt19937_64& rng, unsigned moves_per_axis, bool raw_too)
         j.job.axes[a].moves.push_back(random_raw_move(rng));
         j.ideal[a].push_back(IdealProfile{});
       } else {
-        Ramp r = random_ramp(rng);
-        r.accel = std::min(r.accel, a_lim);
-        r.decel = std::min(r.decel, a_lim);
-        EncodedMove e = encode(r, f);
+        EncodedMove e = encode(random_ramp(rng, f), f);
         j.job.axes[a].moves.push_back(e.regs);
         j.ideal[a].push_back(e.ideal);
       }
     }
   }
   return j;
+}
+
+uint64_t start_frame(uint64_t request_cycle) {
+  uint64_t b = request_cycle + 1;
+  while (b % kFrameCycles != kBoundaryCycle) ++b;
+  return b + (kFrameCycles - kBoundaryCycle);
 }
 
 }  // namespace hexstep::test

@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// Plans -> registers -> the golden model (hexstep::CoreModel, event mode): exactly N steps,
-// every step within allowance_cycles of ideal_rise_cycle, and the encoded IdealProfile's
-// duration and peak equal the plan's to 1e-6 relative. Also the range checks of encode() and
-// check_pulse_rate().
+// Plans -> registers -> the core's timing (the one-axis frame runner of tests/common/axis_run on
+// the model's AxisGen and PulseStage, equal to the cycle-exact TopModel by
+// tests/model/test_event_mode.cpp): exactly N steps, every step within allowance_cycles of
+// ideal_rise_cycle, and the encoded IdealProfile's duration and peak equal the plan's to 1e-6
+// relative. Also the range checks of encode() and check_pulse_rate(). The registers count
+// ticks (tick_rate(f) = f / 32): the limits below are one step per tick and ACC_W's range.
 #include <array>
 #include <string>
 
+#include "axis_run.hpp"
 #include "common.hpp"
-#include "hexstep/job.hpp"
 
 using namespace hexstep::plan;
 using namespace hexstep::plan::test;
@@ -16,44 +18,40 @@ using hexstep::real;
 namespace {
 constexpr real kClock = 100e6;
 
-
 struct RunStats {
   real worst_ratio = 0;  // worst |error| / allowance
   uint64_t steps = 0;
 };
 
-// Runs the encoded moves together (one per axis, all started on cycle 0) on the model and
-// checks every step against its ideal instant. Returns the last step's cycle per axis.
+// Runs each encoded move on its axis (all axes of one START share their time zero, so each
+// axis alone gives the same instants) and checks every step against its ideal instant. Returns
+// the last step's cycle per axis, from the common time zero.
 std::array<uint64_t, hexstep::kNumAxes> run_and_check(const std::vector<std::pair<unsigned, hexstep::EncodedMove>>& moves,
                                                       real clock, RunStats& st, const std::string& name) {
-  hexstep::Job job;
-  job.clock_hz = static_cast<uint64_t>(clock);
-  std::array<const hexstep::EncodedMove*, hexstep::kNumAxes> enc{};
+  (void)clock;
+  std::array<uint64_t, hexstep::kNumAxes> last{};
   for (const auto& m : moves) {
-    job.axes[m.first].moves.push_back(m.second.regs);
-    enc[m.first] = &m.second;
-  }
-  std::array<uint64_t, hexstep::kNumAxes> count{}, last{};
-  hexstep::CoreModel core;
-  hexstep::RunOptions opt;
-  opt.event_mode = true;
-  const hexstep::RunResult r = hexstep::run_job(core, job, [&](const hexstep::StepEvent& ev) {
-    const hexstep::EncodedMove& e = *enc[ev.axis];
-    ++count[ev.axis];
-    last[ev.axis] = ev.cycle;
-    const real ideal = hexstep::ideal_rise_cycle(e.ideal, ev.step);
-    const real err = std::fabs(static_cast<real>(ev.cycle) - ideal);
-    const real allow = hexstep::allowance_cycles(e.ideal, ev.step);
-    st.worst_ratio = std::max(st.worst_ratio, err / allow);
-    EXPECT_LE(err, allow) << name << " axis " << ev.axis << " step " << ev.step << " cycle " << ev.cycle
-                          << " ideal " << static_cast<double>(ideal);
-    EXPECT_EQ(ev.dir, e.regs.dir) << name;
-  }, opt);
-  EXPECT_FALSE(r.timed_out) << name;
-  for (const auto& m : moves) {
-    EXPECT_EQ(count[m.first], m.second.regs.steps) << name << " axis " << m.first;
-    EXPECT_EQ(r.refused[m.first], 0u) << name;
-    st.steps += count[m.first];
+    const hexstep::EncodedMove& e = m.second;
+    hexstep::test::AxisRunOptions o;
+    o.axis = m.first;
+    const hexstep::test::AxisRun r = hexstep::test::run_axis(e.regs, o);
+    EXPECT_FALSE(r.timed_out) << name;
+    EXPECT_FALSE(r.refused && e.regs.steps != 0) << name;
+    EXPECT_EQ(r.rises.size(), e.regs.steps) << name << " axis " << m.first;
+    unsigned bad = 0;
+    for (const hexstep::test::AxisRise& x : r.rises) {
+      const real ideal = hexstep::ideal_rise_cycle(e.ideal, x.step);
+      const real err = std::fabs(static_cast<real>(x.cycle) - ideal);
+      const real allow = hexstep::allowance_cycles(e.ideal, x.step);
+      st.worst_ratio = std::max(st.worst_ratio, err / allow);
+      if (err > allow && bad++ < 3)
+        ADD_FAILURE() << name << " axis " << m.first << " step " << x.step << " cycle " << x.cycle << " ideal "
+                      << static_cast<double>(ideal) << " allowance " << static_cast<double>(allow);
+      EXPECT_EQ(x.dir, e.regs.dir) << name;
+      last[m.first] = x.cycle;
+    }
+    if (bad > 3) ADD_FAILURE() << name << " axis " << m.first << ": " << bad << " steps outside the allowance";
+    st.steps += r.rises.size();
   }
   return last;
 }
@@ -133,17 +131,18 @@ TEST(Encode, SeedMovesRunOnTheModel) {
 }
 
 // Random plans (minimum-time and timed) at 1, 10 and 100 MHz. Accelerations are at least
-// 10^7 register LSBs (f^2 / 2^64 steps/s^2 each), so that rounding them changes the profile by
-// less than 1e-7 relative; speeds stay below a quarter of the clock (the pulse stage's limit is
-// a half with 1-cycle STEP high and low).
+// 10^7 register LSBs (ft^2 / 2^64 steps/s^2 each, ft = f / 32 ticks/s), so that rounding them
+// changes the profile by less than 1e-7 relative, and at most half of ACC_W's range; speeds stay
+// below 0.9 step per tick (the register's limit is one).
 TEST(Encode, RandomPlansRunOnTheModel) {
   std::mt19937_64 rng(seed_for("Encode.RandomPlansRunOnTheModel"));
   RunStats st;
   int timed = 0;
   for (int i = 0; i < 300; ++i) {
     const real clock = std::array<real, 3>{1e6L, 1e7L, 1e8L}[rng() % 3];
-    const real lsb = clock * clock / 18446744073709551616.0L;
-    const real vtop = std::min<real>(5e6L, clock / 4);
+    const real ft = hexstep::tick_rate(clock);
+    const real lsb = ft * ft / 18446744073709551616.0L;
+    const real vtop = std::min<real>(5e6L, 0.9L * ft);
     const real amin = std::max<real>(1e7L * lsb, 10);
     const uint64_t N = static_cast<uint64_t>(log_uniform(rng, 1, 20000));
     Limits l;
@@ -186,10 +185,11 @@ TEST(Encode, RandomPlansRunOnTheModel) {
   EXPECT_GT(timed, 30);
 }
 
-// A coordinated line on all six axes, run together on the model at 10 MHz: every axis makes its
-// steps on time, and all arrive together (their ideal durations equal the path's). Each axis's
-// acceleration is the path's times |N_i|/L >= 1/100 of at least 1e5 steps/s^2: >= 1.8e8 LSBs
-// (5.4e-6 steps/s^2 each at 10 MHz).
+// A coordinated line on all six axes at 10 MHz: every axis makes its steps on time, and all
+// arrive together (their ideal durations equal the path's). Each axis's acceleration is the
+// path's times |N_i|/L >= 1/100 of at least 1e4 steps/s^2: >= 1.9e10 LSBs (5.3e-9 steps/s^2
+// each at 10 MHz); at most 1e6 of ACC_W's 1.46e6 steps/s^2 there; speeds below 0.9 step per
+// tick (281 k steps/s).
 TEST(Encode, CoordinatedLineRunsTogether) {
   std::mt19937_64 rng(seed_for("Encode.CoordinatedLineRunsTogether"));
   const real kLineClock = 10e6;
@@ -200,9 +200,9 @@ TEST(Encode, CoordinatedLineRunsTogether) {
       AxisRequest r;
       r.axis = a;
       r.steps = static_cast<int64_t>(log_uniform(rng, 80, 8000)) * (rng() & 1 ? 1 : -1);
-      r.limits.max_speed = log_uniform(rng, 1e3, 2e6);
-      r.limits.accel = log_uniform(rng, 1e5, 5e7);  // ACC_W: at most 9.5e7 at 10 MHz
-      r.limits.decel = log_uniform(rng, 1e5, 5e7);
+      r.limits.max_speed = log_uniform(rng, 1e3, 2.8e5);
+      r.limits.accel = log_uniform(rng, 1e4, 1e6);
+      r.limits.decel = log_uniform(rng, 1e4, 1e6);
       req.push_back(r);
     }
     const LinePlan line = coordinated_line(req);
@@ -233,25 +233,29 @@ TEST(Encode, CoordinatedLineRunsTogether) {
 }
 
 TEST(Encode, UnrepresentableValuesAreNamedWithTheRangeAtThisClock) {
+  // At 100 MHz a tick is 32 cycles: speeds in [2^-64, 1) step per tick = [1.69e-13, 3125000)
+  // steps/s, accelerations up to 2^-16 step per tick^2 = 1.49e8 steps/s^2 (ACC_W = 48).
+  const real ft = hexstep::tick_rate(kClock);
+  ASSERT_EQ(ft, 3125000.0L);
   Limits l;
-  l.max_speed = 2e8;  // faster than one step per cycle at 100 MHz
-  l.accel = 9e9;
-  expect_error([&] { encode(plan_min_time(4000000000u, l), kClock); }, "--max-speed", "[5.42101086e-12, 100000000)");
+  l.max_speed = 4e6;  // faster than one step per tick at 100 MHz
+  l.accel = 1e8;
+  expect_error([&] { encode(plan_min_time(4000000000u, l), kClock); }, "--max-speed", "[1.69406589e-13, 3125000)");
   l.max_speed = 1000;
-  l.accel = 1e-4;  // below one LSB (5.4e-4 steps/s^2 at 100 MHz)
+  l.accel = 1e-7;  // below one LSB (ft^2 / 2^64 = 5.29e-7 steps/s^2 at 100 MHz)
   expect_error([&] { encode(plan_min_time(10, l), kClock); }, "--accel", "steps/s^2");
   l.accel = 1000;
-  l.decel = 1e-5;
+  l.decel = 1e-7;
   l.start_speed = 1000;
   l.end_speed = 999;
-  expect_error([&] { encode(plan_min_time(1000, l), kClock); }, "--decel", "[");
+  expect_error([&] { encode(plan_min_time(1000, l), kClock); }, "--decel", "[5.29395592e-07");
   l = Limits{};
   l.max_speed = 1000;
-  l.accel = 1e13;  // above the ACC_W range at 100 MHz (9.5e9)
-  expect_error([&] { encode(plan_min_time(1000, l), kClock); }, "--accel", "9.5");
-  // At 1 MHz the same 1e-4 steps/s^2 is 1845 LSBs: representable.
-  l.accel = 1e-4;
-  l.max_speed = 1e-3;
+  l.accel = 1e13;  // above the ACC_W range at 100 MHz ((2^48 - 1) / 2^64 * ft^2)
+  expect_error([&] { encode(plan_min_time(1000, l), kClock); }, "--accel", "149011612");
+  // At 1 MHz the same 1e-7 steps/s^2 is 1,890 LSBs (5.29e-11 steps/s^2 each): representable.
+  l.accel = 1e-7;
+  l.max_speed = 1e-4;
   EXPECT_NO_THROW(encode(plan_min_time(1, l), 1e6));
   for (real f : {real(0), real(-1), std::numeric_limits<real>::quiet_NaN()})
     expect_error([&] { encode(plan_min_time(1, l), f); }, "--clock-hz", "> 0");

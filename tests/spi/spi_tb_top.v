@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // hexstep: co-simulation top for tests/spi: hexstep_spi_wb driving hexstep_top, with the
-// Wishbone bus between them brought out so the test can check that malformed frames never
-// start a bus cycle.
+// Wishbone bus between them brought out so that the test can feed TopModel the same bus pins,
+// compare the read data, and check that malformed frames never start a bus cycle.
 `default_nettype none
 
 module spi_tb_top (
@@ -21,7 +21,8 @@ module spi_tb_top (
   output wire [11:0] mon_adr_o,
   output wire [31:0] mon_dat_o,
   output wire [3:0]  mon_sel_o,
-  output wire        mon_ack_o
+  output wire        mon_ack_o,
+  output wire [31:0] mon_rdat_o
 );
 
   wire        cyc, stb, we, ack;
@@ -44,12 +45,13 @@ module spi_tb_top (
     .estop_i (estop_i), .irq_o (irq_o), .step_o (step_o), .dir_o (dir_o)
   );
 
-  assign mon_cyc_o = cyc & stb;
-  assign mon_we_o  = we;
-  assign mon_adr_o = adr;
-  assign mon_dat_o = wdat;
-  assign mon_sel_o = sel;
-  assign mon_ack_o = ack;
+  assign mon_cyc_o  = cyc & stb;
+  assign mon_we_o   = we;
+  assign mon_adr_o  = adr;
+  assign mon_dat_o  = wdat;
+  assign mon_sel_o  = sel;
+  assign mon_ack_o  = ack;
+  assign mon_rdat_o = rdat;
 
 endmodule
 

@@ -14,8 +14,12 @@ namespace hexstep {
 
 using real = long double;
 
+// The register units count ticks: one tick of every axis per frame of kFrameCycles clock
+// cycles, so a tick lasts kFrameCycles / clock_hz seconds (tick_rate: ticks per second).
+real tick_rate(real clock_hz);
 // steps/s -> speed register (2^-SPEED_W step per tick), rounded down. Returns false if the
-// value does not fit (>= 1 step per tick) or is not finite/negative.
+// value does not fit (>= 1 step per tick) or is not finite/negative. clock_hz is the core's
+// clock (the registers are in units of its ticks).
 bool speed_to_reg(real steps_per_s, real clock_hz, uint64_t& reg, const Widths& w = Widths{});
 // steps/s^2 -> acceleration register (2^-SPEED_W step per tick^2), rounded down.
 bool accel_to_reg(real steps_per_s2, real clock_hz, uint64_t& reg, const Widths& w = Widths{});
@@ -61,8 +65,10 @@ struct EncodedMove {
 // range when a value cannot be represented at this clock.
 EncodedMove encode_ramp(const RampProfile& p, real clock_hz, const Widths& w = Widths{});
 
-// Clock cycle (from the start strobe) at which the ideal profile's step i (1-based) would
-// rise if the core had no quantization: kStepLatency + time_at(i) * clock_hz.
+// Clock cycle, counted from the move's time zero (the first cycle of the frame whose slot ran
+// its first tick), at which the ideal profile's step i (1-based) would rise if the core had no
+// quantization: kStepLatency + time_at(i) * clock_hz. The core's STEP rises on the cycle
+// ceil(that) or up to one cycle later (docs/ARCHITECTURE.md, "Timing of the outputs").
 real ideal_rise_cycle(const IdealProfile& p, uint32_t i);
 
 // The accuracy allowance of the core issue for step i, in clock cycles:

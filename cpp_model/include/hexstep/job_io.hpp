@@ -23,17 +23,17 @@ class JobError : public std::runtime_error {
 Job parse_job(const std::string& text, const Widths& w = Widths{});
 
 // The names of the widths as RTL parameters and job-file keys, in this order: SPEED_W, ACC_W,
-// STEP_W, DFRAC_W, PULSE_W, POS_W, OWE_W.
-constexpr unsigned kNumWidths = 7;
+// STEP_W, DFRAC_W, PULSE_W, POS_W.
+constexpr unsigned kNumWidths = 6;
 extern const char* const kWidthNames[kNumWidths];
 unsigned& width_ref(Widths& w, unsigned i);
 unsigned width_of(const Widths& w, unsigned i);
-// The accepted range of width i given the others (ACC_W and DFRAC_W depend on SPEED_W).
+// The accepted range of width i (the RTL's parameter ranges, rtl/hexstep_top.v).
 void width_range(const Widths& w, unsigned i, unsigned& lo, unsigned& hi);
-// Empty if every width is within its range (the RTL's parameter ranges, rtl/hexstep_axis.v),
+// Empty if every width is within its range (the RTL's parameter ranges, rtl/hexstep_top.v),
 // else "NAME: must be an integer in [lo, hi], got v" for the first that is not.
 std::string widths_error(const Widths& w);
-// "SPEED_W 24, ACC_W 12, ..." (all seven).
+// "SPEED_W 64, ACC_W 48, ..." (all six).
 std::string widths_text(const Widths& w);
 bool same_widths(const Widths& a, const Widths& b);
 

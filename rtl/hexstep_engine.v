@@ -1,0 +1,621 @@
+// SPDX-License-Identifier: Apache-2.0
+// hexstep: the frame engine: one shared add-only datapath that runs every axis's tick in turn,
+// its state and move queues in four block-RAM banks, and the per-axis start/stop/queue control.
+`default_nettype none
+
+// Schedule (docs/ARCHITECTURE.md, "Frames and slots"). g counts cycles modulo 128; a frame is
+// 32 cycles, slot i = frame cycles 4i..4i+3 belongs to axis i, so every axis advances by one
+// tick per frame. Cycles with g[1:0] == 3 (the bus cycles) give the four banks to the bus block
+// (staging registers, configuration mirror, loader, initialization); the engine uses the others.
+// Axis i's slot is sampled at the edge that ends frame cycle 4i - 1 (its control state, the
+// frame's START/STOP masks, taken at the edge that ends frame cycle 30, and its output stage's
+// state decide whether a move starts and whether the generator runs) and commits its tick nine
+// edges later, at the end of cycle 4i + 8; in between the datapath reads the axis's words
+// (addresses in cycles 4i..4i+2, from registers; data two cycles later) and computes, in 32-bit
+// halves:
+//     P' = P + S                      (the carry out of the 64-bit fraction is a step)
+//     S' = S + acc, clamped at v_max  (accelerate)      S' = S   (cruise)
+//     S' = S - dec, not below floor   (decelerate; the first decelerating tick loads v_dec)
+//     S' = S - dec                    (stopping: ends when the old speed is below dec)
+// and the counters of steps to the end, to acc_steps and to dec_step. A step's sub-tick offset
+// (cycles before the end of its tick) comes from a 5-bit restoring division of the top 16 bits
+// of the overshoot P' and of S; the step is handed to the axis's output stage due on cycle
+// F + 68 - q (F: first cycle of the sample's frame). No multiplier, no divider: adders,
+// comparators, a 13-bit compare-and-subtract five times. Bit-exact counterpart: hexstep::AxisGen
+// and hexstep::TopModel (cpp_model/src/axis.cpp, top_model.cpp).
+//
+// Memory map (address = {axis, word}; slot s of the queue at words 8 + 8s + offset):
+//   bank 0: 0 S_lo, 1 S_hi, 2 steps-to-end;            3..7 staging;  slot: +0 V_START lo, +1 hi, +2 STEPS
+//   bank 1: 0 P_lo, 1 P_hi, 2 steps-to-acc_steps;      3..7 staging;  slot: +0 ACC_STEPS
+//   bank 2: 0 steps-to-dec_step;                       1..7 staging;  slot: +0 ACC lo, +1 hi, +2 ~DEC lo,
+//                                                                         +3 hi, +4 V_DEC lo, +5 hi, +6 DEC_STEP, +7 zero
+//   bank 3: 0..4 pulse configuration mirror;                          slot: +0 V_MAX lo, +1 hi, +2 FLOOR lo,
+//                                                                         +3 hi, +4 DEC_FRAC (aligned to bit 31)
+//
+// Queue: three slots per axis, a ring: `act` is the slot of the running (or last) move and the
+// qn queued moves follow it; the loader fills slot act + 1 + qn. Reset: synchronous, active
+// high; control state is reset, the memory and the datapath registers are not (a word is read
+// only after the engine or the loader has written it; pipeline registers only while valid).
+module hexstep_engine #(
+  // NAXES: axes (unit: axes). Range 1..8, the slots of a frame; default 6.
+  parameter integer NAXES     = 6,
+  // RAM_STYLE: implementation of the memory banks, see hexstep_ram ("DELAY" or "ECP5").
+  parameter         RAM_STYLE = "DELAY"
+) (
+  input  wire               clk_i,
+  input  wire               rst_i,          // synchronous, active high
+  output wire [6:0]         g_o,            // cycle counter modulo 128
+  // Control from the bus block; each acts at the edge that ends the cycle it is high in.
+  input  wire [NAXES-1:0]   start_w_i,      // START written: start at the next frame boundary
+  input  wire [NAXES-1:0]   stop_w_i,       // STOP written: stop at the next frame boundary
+  input  wire [NAXES-1:0]   abort_i,        // abort now (ABORT strobe or e-stop latch)
+  input  wire               push_i,         // the loader commits a move into slot act+1+qn
+  input  wire [2:0]         push_axis_i,
+  input  wire [6:0]         push_flags_i,   // {dec_zero, init[1:0], dir, jog, empty, bad}
+  // The banks on bus cycles (g[1:0] == 3).
+  input  wire               bus_re_i,
+  input  wire [1:0]         bus_rbank_i,
+  input  wire [7:0]         bus_raddr_i,
+  output wire [31:0]        bus_rdata_o,    // data of the bus read two cycles earlier
+  input  wire [3:0]         bus_we_i,       // one bit per bank
+  input  wire [7:0]         bus_waddr_i,
+  input  wire [31:0]        bus_wdata_i,
+  input  wire               bus_init_i,     // initialization: banks 0..2 write 0
+  // Queue and status per axis.
+  output wire [NAXES*2-1:0] act_o,
+  output wire [NAXES*2-1:0] qn_o,
+  output wire [NAXES-1:0]   busy_o,         // not at rest
+  output wire [NAXES-1:0]   run_o,          // STATUS.run
+  output wire [NAXES*2-1:0] phase_o,        // 0 idle, 1 accelerate, 2 cruise, 3 decelerate
+  output wire [NAXES-1:0]   done_o,         // busy fell in the last cycle, or a move was consumed
+  output wire [NAXES-1:0]   refused_o,      // a refused move was consumed at this edge
+  output wire [NAXES-1:0]   freed_o,        // a queue entry becomes free at this edge
+  output wire [NAXES-1:0]   flush_o,        // the queue is flushed at this edge
+  // Output stages.
+  input  wire [NAXES-1:0]   accepts_i,
+  input  wire [NAXES-1:0]   pending_i,
+  input  wire [NAXES-1:0]   tgt_i,
+  output wire [NAXES-1:0]   req_o,
+  output wire [6:0]         req_due_o,      // due cycle of the request (one request per edge)
+  output wire [NAXES-1:0]   tgt_load_o,
+  output wire               tgt_dir_o
+);
+
+  localparam [1:0] PH_IDLE = 2'd0, PH_ACCEL = 2'd1, PH_CRUISE = 2'd2, PH_DECEL = 2'd3;
+  // Per-axis state is kept for all 8 slots (indexed by the 3-bit slot number); slots NAXES..7
+  // stay in reset and are never sampled.
+  localparam integer NS = 8;
+  // Slot flag bits.
+  localparam integer F_BAD = 0, F_EMPTY = 1, F_JOG = 2, F_DIR = 3, F_INIT = 4, F_DZ = 6;
+  localparam [6:0] DUE_OFFSET = 7'd68;
+  // SUB_W: bits of the overshoot and of the speed (their top bits) that the sub-tick division
+  // uses (cpp_model kSubtickBits): the rounding of 12 bits costs at most 2^-12 / v cycles, a
+  // quarter of the 0.001-step allowance, and two restoring steps fit one cycle.
+  localparam integer SUB_W = 12;
+
+  // ---------------------------------------------------------------------------------------
+  // Cycle counter.
+  reg  [6:0] g_q;
+  wire [4:0] f = g_q[4:0];
+  wire [1:0] kc = g_q[1:0];
+  wire       boundary = (f == 5'd30);
+
+  // ---------------------------------------------------------------------------------------
+  // Per-axis control state.
+  reg  [NS-1:0]    run_q, decf_q, stop_q, chain_q, running_q, starting_q, busy_q;
+  reg  [NS-1:0]    spend_q, ppend_q, fstart_q, fstop_q;
+  reg  [NS*2-1:0]  ph_q, act_q, qn_q;
+  // Flags of the moves in the queue ring by position: [6:0] the running (or last) move, [13:7]
+  // the head of the queue, [20:14] the one after it (shifted on a pop).
+  reg  [NS*21-1:0] sf_q;
+  reg  [NS-1:0]    run_d, decf_d, stop_d, chain_d, running_d, starting_d;
+  reg  [NS-1:0]    spend_d, ppend_d, fstart_d, fstop_d;
+  reg  [NS*2-1:0]  ph_d, act_d, qn_d;
+  reg  [NS*21-1:0] sf_d;
+
+  // The per-axis inputs, padded to 8 slots.
+  wire [NS-1:0] accepts, pending, tgt, abort, start_w, stop_w;
+  generate
+    if (NAXES < NS) begin : g_pad
+      assign accepts = {{(NS-NAXES){1'b0}}, accepts_i};
+      assign pending = {{(NS-NAXES){1'b0}}, pending_i};
+      assign tgt     = {{(NS-NAXES){1'b0}}, tgt_i};
+      assign abort   = {{(NS-NAXES){1'b0}}, abort_i};
+      assign start_w = {{(NS-NAXES){1'b0}}, start_w_i};
+      assign stop_w  = {{(NS-NAXES){1'b0}}, stop_w_i};
+    end else begin : g_full
+      assign accepts = accepts_i;
+      assign pending = pending_i;
+      assign tgt     = tgt_i;
+      assign abort   = abort_i;
+      assign start_w = start_w_i;
+      assign stop_w  = stop_w_i;
+    end
+  endgenerate
+
+  function [1:0] inc3(input [1:0] x);
+    inc3 = (x == 2'd2) ? 2'd0 : x + 2'd1;
+  endfunction
+
+  // ---------------------------------------------------------------------------------------
+  // Sample (edge ending cycle 4i - 1, a bus cycle): every axis's decision is computed from its
+  // own flip-flops in parallel; a registered one-hot pointer (the axis of the next sample) selects
+  // the one that is registered into stage 1 and updates that axis's state.
+  reg  [NS-1:0]      smp_oh_q;                   // one-hot: the axis sampled at the next bus cycle
+  reg  [2:0]         si_q;                       // its number
+  wire [NS-1:0]      ax_mask = {NS{1'b1}} >> (NS - NAXES);   // the axes that exist
+  wire               smp_slot = (kc == 2'd3) && ((smp_oh_q & ax_mask) != {NS{1'b0}});
+  wire [2:0]         si = si_q;
+  wire [NS-1:0]      a_start_new, a_start_chain, a_start, a_gen;
+  genvar ga;
+  generate
+    for (ga = 0; ga < NS; ga = ga + 1) begin : g_dec
+      wire [6:0] hf = sf_q[ga*21 + 7 +: 7];       // flags of the head of the queue
+      wire       busy = run_q[ga] | chain_q[ga] | starting_q[ga] | pending[ga];
+      wire       dir_ok = hf[F_BAD] | hf[F_EMPTY] | (hf[F_DIR] == tgt[ga]) | ~pending[ga];
+      assign a_start_new[ga] = fstart_q[ga] & ~fstop_q[ga] & ~running_q[ga] & ~busy &
+                               (qn_q[ga*2 +: 2] != 2'd0);
+      assign a_start_chain[ga] = chain_q[ga] & ~fstop_q[ga] & accepts[ga] & dir_ok;
+      assign a_start[ga] = a_start_new[ga] | a_start_chain[ga];
+      assign a_gen[ga] = a_start[ga] ? ~(hf[F_BAD] | hf[F_EMPTY]) : (run_q[ga] & accepts[ga]);
+    end
+  endgenerate
+  wire [1:0]         s_act = act_q[si*2 +: 2];
+  wire [1:0]         s_head = inc3(s_act);
+  // si * 21 as shifted adds (no multiplier cell in the core, make lint)
+  wire [7:0]         si21 = {1'b0, si, 4'b0000} + {3'b000, si, 2'b00} + {5'b00000, si};
+  wire [13:0]        s_sf = sf_q[si21 +: 14];
+  wire [6:0]         s_af = s_sf[6:0];                 // flags of the running move
+  wire [6:0]         s_hf = s_sf[13:7];                // flags of the head of the queue
+  wire               s_valid = smp_slot & ~abort[si];
+  wire               s_start = a_start[si];
+  wire [1:0]         s_slot = s_start ? s_head : s_act;
+  wire [6:0]         s_fl = s_start ? s_hf : s_af;
+  wire [1:0]         s_ph = s_start ? s_fl[F_INIT +: 2] : ph_q[si*2 +: 2];
+  wire               s_decf = s_start | decf_q[si];
+  wire               s_stop = ~s_start & stop_q[si];
+  wire               s_gen = a_gen[si];
+
+  // Slot word addresses.
+  function [4:0] slot_word(input [1:0] s, input [2:0] off);
+    slot_word = {s + 2'd1, off};   // 8 + 8s + off
+  endfunction
+  // Addend word offset in bank 2 and limit offset in bank 3 by phase.
+  function [2:0] a_off(input [1:0] ph, input decf, input stp);
+    a_off = (ph == PH_ACCEL) ? 3'd0 : (ph == PH_DECEL) ? ((decf & ~stp) ? 3'd4 : 3'd2) : 3'd7;
+  endfunction
+
+  // Pipeline stage 1 (loaded at the sample edge, end of 4i-1; read in cycles 4i..4i+3).
+  reg        p1_valid, p1_start, p1_decf, p1_stop, p1_gen, p1_fstop, p1_abort;
+  reg [2:0]  p1_ax;
+  reg [1:0]  p1_slot, p1_ph, p1_frame;
+  reg [6:0]  p1_fl;
+  // Stage 2 (loaded at the end of 4i+3; read in cycles 4i+4..4i+7), stage 3 (the last write).
+  reg        p2_valid, p2_start, p2_decf, p2_stop, p2_gen, p2_fstop, p2_abort;
+  reg [2:0]  p2_ax;
+  reg [1:0]  p2_ph, p2_frame;
+  reg [6:0]  p2_fl;
+  reg        p3_we, p3_valid, p3_start, p3_abort, p3_dir;
+  reg [NAXES-1:0] req_pre_q;
+  integer rk;
+  reg [2:0]  p3_ax;
+  reg [1:0]  p3_frame;
+  // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
+  reg        d_gen, d_consume, d_bad, d_run, d_ended, d_decf, d_stop, d_fstop, d_req;
+  reg [1:0]  d_ph;
+
+  // ---------------------------------------------------------------------------------------
+  // Memory banks.
+  reg  [7:0]  ra0, ra1, ra2, ra3, wa0, wa1, wa2;
+  reg  [31:0] wd0, wd1, wd2;
+  reg         we0, we1, we2, re_e;
+  wire [31:0] rd0, rd1, rd2, rd3;
+  wire        bus_cyc = (kc == 2'd3);
+  wire [31:0] bwd012 = bus_init_i ? 32'd0 : bus_wdata_i;
+
+  hexstep_ram #(.STYLE (RAM_STYLE)) u_bank0 (
+    .clk_i (clk_i), .re_i (bus_cyc ? (bus_re_i && bus_rbank_i == 2'd0) : re_e),
+    .raddr_i (bus_cyc ? bus_raddr_i : ra0), .rdata_o (rd0),
+    .we_i (bus_cyc ? bus_we_i[0] : we0), .waddr_i (bus_cyc ? bus_waddr_i : wa0),
+    .wdata_i (bus_cyc ? bwd012 : wd0));
+  hexstep_ram #(.STYLE (RAM_STYLE)) u_bank1 (
+    .clk_i (clk_i), .re_i (bus_cyc ? (bus_re_i && bus_rbank_i == 2'd1) : re_e),
+    .raddr_i (bus_cyc ? bus_raddr_i : ra1), .rdata_o (rd1),
+    .we_i (bus_cyc ? bus_we_i[1] : we1), .waddr_i (bus_cyc ? bus_waddr_i : wa1),
+    .wdata_i (bus_cyc ? bwd012 : wd1));
+  hexstep_ram #(.STYLE (RAM_STYLE)) u_bank2 (
+    .clk_i (clk_i), .re_i (bus_cyc ? (bus_re_i && bus_rbank_i == 2'd2) : re_e),
+    .raddr_i (bus_cyc ? bus_raddr_i : ra2), .rdata_o (rd2),
+    .we_i (bus_cyc ? bus_we_i[2] : we2), .waddr_i (bus_cyc ? bus_waddr_i : wa2),
+    .wdata_i (bus_cyc ? bwd012 : wd2));
+  hexstep_ram #(.STYLE (RAM_STYLE)) u_bank3 (
+    .clk_i (clk_i), .re_i (bus_cyc ? (bus_re_i && bus_rbank_i == 2'd3) : re_e),
+    .raddr_i (bus_cyc ? bus_raddr_i : ra3), .rdata_o (rd3),
+    .we_i (bus_cyc & bus_we_i[3]), .waddr_i (bus_waddr_i), .wdata_i (bus_wdata_i));
+
+  // The bus read's bank, two cycles on.
+  reg [1:0] bb1_q, bb2_q;
+  always @(posedge clk_i) begin
+    bb1_q <= bus_rbank_i;
+    bb2_q <= bb1_q;
+  end
+  assign bus_rdata_o = (bb2_q == 2'd0) ? rd0 : (bb2_q == 2'd1) ? rd1 : (bb2_q == 2'd2) ? rd2 : rd3;
+
+  // ---------------------------------------------------------------------------------------
+  // Datapath registers (not reset).
+  reg        cp0_q, ct0_q, step_q, ct1_q, cl0_q, gt_q, dfc_q;
+  reg [31:0] pn_lo_q, t_lo_q, llo_q, pn_hi_q, t_hi_q, lhi_q;
+  reg [31:0] re_n_q, ra_n_q, rd_n_q;
+  reg        zre_q, zra_q, zrd_q, zrd0_q, sell_q;
+  // Sub-tick division: two units, one for the even and one for the odd axes, each doing one
+  // restoring step per cycle in cycles 4i+4..4i+8 (the units alternate, so a step never waits).
+  reg [SUB_W-1:0] dr_q [0:1];              // partial remainder
+  reg [SUB_W-1:0] ds_q [0:1];              // divisor: top bits of S
+  reg [3:0]       dq_q [0:1];              // quotient bits so far
+  reg             dz_q [0:1];              // divisor zero
+
+  // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
+  wire p1_pmask = p1_start;                                        // P starts at 0
+  wire p1_smask = (p1_ph == PH_DECEL) & p1_decf & ~p1_stop;         // t = 0 + V_DEC
+  wire p1_cin   = (p1_ph == PH_DECEL) & ~(p1_decf & ~p1_stop);      // S + ~dec + 1
+
+  // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
+  // rem <= s holds throughout (the overshoot is below the speed), so rem fits SUB_W bits.
+  function [SUB_W:0] dstep(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
+    reg [SUB_W:0] r2;
+    begin
+      r2 = {rem, 1'b0};
+      dstep = (r2 >= {1'b0, s}) ? {r2[SUB_W-1:0] - s, 1'b1} : {r2[SUB_W-1:0], 1'b0};
+    end
+  endfunction
+  reg [SUB_W:0]   dv0, dv1;
+  reg [4:0]       q_w;
+
+  // Limit > t, as the carry out of L + ~t (+ the carry of the low half).
+  wire c_gt_lo, c_gt_hi;
+  wire [31:0] unused_lo, unused_hi;
+  assign {c_gt_lo, unused_lo} = {1'b0, llo_q} + {1'b0, ~t_lo_q};
+  assign {c_gt_hi, unused_hi} = {1'b0, lhi_q} + {1'b0, ~t_hi_q} + {32'd0, cl0_q};
+
+  // Stage-2 decisions (cycles 4i+5, 4i+6), from registers.
+  reg        c_clamp, c_sell, c_stop_end, c_cnt_end, c_dec_trig, c_acc_end, c_ended;
+  reg [1:0]  c_ph_n;
+  reg        c_decf_n;
+
+  always @* begin
+    // Division: a step of each unit; the quotient of the slot in stage 3 (cycle 4i+8).
+    dv0 = dstep(dr_q[0], ds_q[0]);
+    dv1 = dstep(dr_q[1], ds_q[1]);
+    q_w = dz_q[p3_ax[0]] ? 5'd0 : {dq_q[p3_ax[0]], p3_ax[0] ? dv1[0] : dv0[0]};
+
+    c_clamp = ct1_q | ~gt_q;
+    case (p2_ph)
+      PH_ACCEL: c_sell = c_clamp;
+      PH_DECEL: c_sell = p2_stop ? 1'b0 : p2_decf ? gt_q : (~ct1_q | gt_q);
+      default:  c_sell = 1'b0;
+    endcase
+    c_stop_end = p2_stop & (~ct1_q | p2_fl[F_DZ]);
+    c_cnt_end = ~p2_fl[F_JOG] & zre_q;
+    c_dec_trig = ~p2_fl[F_JOG] & (p2_ph != PH_DECEL) & ((zrd_q & dfc_q) | (zrd0_q & step_q));
+    c_acc_end = (p2_ph == PH_ACCEL) & (c_clamp | (~p2_fl[F_JOG] & zra_q));
+    c_ended = c_cnt_end | c_stop_end;
+    c_ph_n = c_ended ? PH_IDLE : c_dec_trig ? PH_DECEL : c_acc_end ? PH_CRUISE : p2_ph;
+    c_decf_n = c_dec_trig ? 1'b1 : (p2_ph == PH_DECEL) ? 1'b0 : p2_decf;
+  end
+
+  // Engine addresses and write data, by cycle of the slot.
+  always @* begin
+    ra0 = 8'd0; ra1 = 8'd0; ra2 = 8'd0; ra3 = 8'd0;
+    wa0 = {p2_ax, 5'd0}; wa1 = {p2_ax, 5'd0}; wa2 = {p2_ax, 5'd0};
+    wd0 = 32'd0; wd1 = 32'd0; wd2 = 32'd0;
+    we0 = 1'b0; we1 = 1'b0; we2 = 1'b0;
+    re_e = 1'b0;
+    case (kc)
+      2'd0: begin
+        // Reads of the sampled axis: S (or V_START), P, addend, limit, low words.
+        ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd0)} : {p1_ax, 5'd0};
+        ra1 = {p1_ax, 5'd0};
+        ra2 = {p1_ax, slot_word(p1_slot, a_off(p1_ph, p1_decf, p1_stop))};
+        ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd2 : 3'd0)};
+        re_e = p1_valid & p1_gen;
+        // Writes: steps-to-end of the axis two slots back, P low of the last one.
+        wa0 = {p3_ax, 5'd2}; wd0 = re_n_q; we0 = p3_we;
+        wa1 = {p2_ax, 5'd0}; wd1 = pn_lo_q; we1 = p2_valid & p2_gen;
+      end
+      2'd1: begin
+        ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd1)} : {p1_ax, 5'd1};
+        ra1 = {p1_ax, 5'd1};
+        // High word of the addend: the next word, except the zero word (cruise) which serves both.
+        ra2 = {p1_ax, slot_word(p1_slot, (a_off(p1_ph, p1_decf, p1_stop) == 3'd7) ? 3'd7 :
+                                         a_off(p1_ph, p1_decf, p1_stop) + 3'd1)};
+        ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd3 : 3'd1)};
+        re_e = p1_valid & p1_gen;
+        wa0 = {p2_ax, 5'd0}; wd0 = c_sell ? llo_q : t_lo_q; we0 = p2_valid & p2_gen;
+        wa1 = {p2_ax, 5'd1}; wd1 = pn_hi_q; we1 = p2_valid & p2_gen;
+        wa2 = {p2_ax, 5'd0}; wd2 = rd_n_q; we2 = p2_valid & p2_gen;
+      end
+      2'd2: begin
+        ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd2)} : {p1_ax, 5'd2};
+        ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd0)} : {p1_ax, 5'd2};
+        ra2 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd6)} : {p1_ax, 5'd0};
+        ra3 = {p1_ax, slot_word(p1_slot, 3'd4)};
+        re_e = p1_valid & p1_gen;
+        wa0 = {p2_ax, 5'd1}; wd0 = sell_q ? lhi_q : t_hi_q; we0 = p2_valid & p2_gen;
+        wa1 = {p2_ax, 5'd2}; wd1 = ra_n_q; we1 = p2_valid & p2_gen;
+      end
+      default: ;
+    endcase
+  end
+
+  // Datapath.
+  always @(posedge clk_i) begin
+    case (kc)
+      2'd2: begin  // low words of S, P, addend, limit (cycle 4i+2)
+        {cp0_q, pn_lo_q} <= {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0};
+        {ct0_q, t_lo_q} <= {1'b0, (p1_smask ? 32'd0 : rd0)} + {1'b0, rd2} + {32'd0, p1_cin};
+        llo_q <= rd3;
+      end
+      2'd3: begin  // high words (cycle 4i+3)
+        {step_q, pn_hi_q} <= phi_sum;
+        {ct1_q, t_hi_q} <= {1'b0, (p1_smask ? 32'd0 : rd0)} + {1'b0, rd2} + {32'd0, ct0_q};
+        cl0_q <= c_gt_lo;
+        lhi_q <= rd3;
+      end
+      2'd0: begin  // counters, compare high, deceleration point, division 1 (cycle 4i+4)
+        gt_q <= c_gt_hi;
+        re_n_q <= rd0 - {31'd0, step_q};
+        ra_n_q <= rd1 - {31'd0, step_q};
+        rd_n_q <= rd2 - {31'd0, step_q};
+        zre_q <= (rd0 == {31'd0, step_q});
+        zra_q <= (rd1 == {31'd0, step_q});
+        zrd_q <= (rd2 == {31'd0, step_q});
+        zrd0_q <= (rd2 == 32'd0);
+        dfc_q <= (pn_hi_q >= rd3);
+      end
+      default: begin  // cycle 4i+5: select of S
+        sell_q <= c_sell;
+      end
+    endcase
+    // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
+    // the axis's parity), a restoring step at every other edge.
+    if (kc == 2'd3) begin
+      dr_q[p1_ax[0]] <= phi_sum[31 -: SUB_W];
+      ds_q[p1_ax[0]] <= rd0[31 -: SUB_W];
+      dz_q[p1_ax[0]] <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
+      dq_q[p1_ax[0]] <= 4'd0;
+      // The other unit (the previous axis) does its fourth step.
+      dr_q[~p1_ax[0]] <= p1_ax[0] ? dv0[SUB_W:1] : dv1[SUB_W:1];
+      dq_q[~p1_ax[0]] <= {dq_q[~p1_ax[0]][2:0], p1_ax[0] ? dv0[0] : dv1[0]};
+    end else begin
+      dr_q[0] <= dv0[SUB_W:1];
+      dr_q[1] <= dv1[SUB_W:1];
+      dq_q[0] <= {dq_q[0][2:0], dv0[0]};
+      dq_q[1] <= {dq_q[1][2:0], dv1[0]};
+    end
+  end
+  wire [32:0] phi_sum = {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0} + {32'd0, cp0_q};
+
+  // ---------------------------------------------------------------------------------------
+  // Control: next state of every axis.
+  integer k;
+  reg        cm, cm_ok, push_ok;
+  reg [2:0]  cj;
+  reg [1:0]  qv, pos;
+  reg [NS-1:0] flush, pop, consumed, refused, freed;
+  reg [6:0]  req_due;
+  reg [20:0] sfk;
+
+  always @* begin
+    run_d = run_q; decf_d = decf_q; stop_d = stop_q; chain_d = chain_q;
+    running_d = running_q; starting_d = starting_q; ph_d = ph_q; act_d = act_q; qn_d = qn_q;
+    sf_d = sf_q; spend_d = spend_q; ppend_d = ppend_q; fstart_d = fstart_q; fstop_d = fstop_q;
+    flush = {NS{1'b0}}; pop = {NS{1'b0}}; consumed = {NS{1'b0}};
+    refused = {NS{1'b0}}; freed = {NS{1'b0}};
+    req_due = {p3_frame, 5'd0} + DUE_OFFSET - {2'b00, q_w};
+    pos = 2'd0; sfk = 21'd0;
+
+    // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
+    // an abort since the sample cancels it.
+    cm = p3_valid && (kc == 2'd0);
+    cj = p3_ax;
+    cm_ok = cm && !p3_abort && !abort[cj];
+    if (cm) starting_d[cj] = 1'b0;
+    if (cm_ok) begin
+      if (d_consume) begin
+        consumed[cj] = 1'b1;
+        refused[cj] = d_bad;
+      end else if (d_gen) begin
+        // (The step request of this commit is req_pre_q.)
+        run_d[cj] = d_run;
+        ph_d[cj*2 +: 2] = d_ph;
+        decf_d[cj] = d_decf;
+        stop_d[cj] = d_stop;
+      end
+      // The move ended or was consumed: the next queued move chains if the axis runs and one
+      // is queued.
+      if (d_consume || (d_gen && d_ended)) begin
+        if (running_q[cj] && qn_q[cj*2 +: 2] != 2'd0) chain_d[cj] = 1'b1;
+        else running_d[cj] = 1'b0;
+      end
+      if (d_fstop && (d_gen ? d_run : run_q[cj])) begin
+        stop_d[cj] = 1'b1;
+        ph_d[cj*2 +: 2] = PH_DECEL;
+        decf_d[cj] = 1'b0;
+      end
+    end
+
+    // Sample (edge ending 4i-1), per axis with the one-hot pointer.
+    for (k = 0; k < NAXES; k = k + 1) begin
+      if (smp_oh_q[k] && kc == 2'd3) begin
+        if (!abort[k]) begin
+          if (fstop_q[k]) begin
+            flush[k] = 1'b1;
+            running_d[k] = 1'b0;
+            chain_d[k] = 1'b0;
+          end else if (a_start[k]) begin
+            pop[k] = 1'b1;
+            act_d[k*2 +: 2] = inc3(act_q[k*2 +: 2]);
+            if (a_start_new[k]) running_d[k] = 1'b1;
+            chain_d[k] = 1'b0;
+            starting_d[k] = 1'b1;
+          end
+        end
+        fstart_d[k] = 1'b0;
+        fstop_d[k] = 1'b0;
+      end
+    end
+
+    // START/STOP act at frame boundaries.
+    if (boundary) begin
+      fstart_d = spend_q;
+      fstop_d = ppend_q;
+      spend_d = {NS{1'b0}};
+      ppend_d = {NS{1'b0}};
+    end
+    spend_d = spend_d | start_w;
+    ppend_d = ppend_d | stop_w;
+
+    // Abort.
+    for (k = 0; k < NAXES; k = k + 1) begin
+      if (abort[k]) begin
+        run_d[k] = 1'b0;
+        ph_d[k*2 +: 2] = PH_IDLE;
+        running_d[k] = 1'b0;
+        chain_d[k] = 1'b0;
+        starting_d[k] = 1'b0;
+        spend_d[k] = 1'b0;
+        ppend_d[k] = 1'b0;
+        fstart_d[k] = 1'b0;
+        fstop_d[k] = 1'b0;
+        flush[k] = 1'b1;
+      end
+    end
+
+    // Queue counts and flags: flush, pop (the flags shift down one position), the loader's
+    // push into position 1 + qn after the pop (dropped by a flush at its commit edge).
+    for (k = 0; k < NAXES; k = k + 1) begin
+      qv = qn_q[k*2 +: 2];
+      push_ok = push_i && ({29'd0, push_axis_i} == k) && !flush[k];
+      sfk = sf_q[k*21 +: 21];
+      if (pop[k]) sfk = {7'd0, sfk[20:7]};
+      pos = qv + 2'd1 - {1'b0, pop[k]};
+      if (push_ok) begin
+        if (pos == 2'd1) sfk[13:7] = push_flags_i;
+        else sfk[20:14] = push_flags_i;
+      end
+      sf_d[k*21 +: 21] = sfk;
+      if (flush[k]) qn_d[k*2 +: 2] = 2'd0;
+      else qn_d[k*2 +: 2] = qv - {1'b0, pop[k]} + {1'b0, push_ok};
+      freed[k] = (qn_d[k*2 +: 2] < qv);
+    end
+  end
+
+  // The loader's memory slot (act + 1 + qn mod 3) is computed in the bus block from act_o and
+  // qn_o at the push's start; pops do not move it, a flush cancels the push.
+
+  always @(posedge clk_i) begin
+    if (rst_i) begin
+      g_q <= 7'd0;
+      run_q <= {NS{1'b0}}; decf_q <= {NS{1'b0}}; stop_q <= {NS{1'b0}};
+      chain_q <= {NS{1'b0}}; running_q <= {NS{1'b0}}; starting_q <= {NS{1'b0}};
+      busy_q <= {NS{1'b0}};
+      spend_q <= {NS{1'b0}}; ppend_q <= {NS{1'b0}};
+      fstart_q <= {NS{1'b0}}; fstop_q <= {NS{1'b0}};
+      ph_q <= {NS*2{1'b0}}; act_q <= {NS*2{1'b0}}; qn_q <= {NS*2{1'b0}};
+      sf_q <= {NS*21{1'b0}};
+      p1_valid <= 1'b0; p2_valid <= 1'b0; p3_valid <= 1'b0;
+      si_q <= 3'd0; smp_oh_q <= {NS{1'b0}};
+    end else begin
+      g_q <= g_q + 7'd1;
+      // The next sample's axis: axis 0 after frame cycle 30, then one slot further at each bus
+      // cycle (none for slots NAXES..7).
+      if (kc == 2'd3 || g_q[4:0] == 5'd30) begin
+        si_q <= (g_q[4:0] == 5'd30) ? 3'd0 : si_q + 3'd1;
+        smp_oh_q <= (g_q[4:0] == 5'd30) ? {{(NS-1){1'b0}}, 1'b1} : {smp_oh_q[NS-2:0], 1'b0};
+      end
+      run_q <= run_d; decf_q <= decf_d; stop_q <= stop_d; chain_q <= chain_d;
+      running_q <= running_d; starting_q <= starting_d;
+      busy_q <= busy8;
+      spend_q <= spend_d; ppend_q <= ppend_d; fstart_q <= fstart_d; fstop_q <= fstop_d;
+      ph_q <= ph_d; act_q <= act_d; qn_q <= qn_d; sf_q <= sf_d;
+      // Pipeline valid bits.
+      if (kc == 2'd3) p1_valid <= s_valid;
+      if (kc == 2'd3) p2_valid <= p1_valid;
+      if (kc == 2'd3) p3_valid <= p2_valid;
+    end
+  end
+
+  // Pipeline payload (not reset: read only while valid).
+  always @(posedge clk_i) begin
+    if (kc == 2'd3) begin
+      // Stage 1 from the sample; stage 2 from stage 1.
+      p1_start <= s_start; p1_decf <= s_decf; p1_stop <= s_stop;
+      p1_gen <= s_gen; p1_fstop <= fstop_q[si]; p1_abort <= 1'b0;
+      p1_ax <= si; p1_slot <= s_slot; p1_ph <= s_ph; p1_frame <= g_q[6:5] + {1'b0, (si == 3'd0)};
+      p1_fl <= s_fl;
+      p2_start <= p1_start; p2_decf <= p1_decf; p2_stop <= p1_stop;
+      p2_gen <= p1_gen; p2_fstop <= p1_fstop; p2_abort <= p1_abort | abort[p1_ax];
+      p2_ax <= p1_ax; p2_ph <= p1_ph; p2_frame <= p1_frame; p2_fl <= p1_fl;
+      p3_we <= p2_valid & p2_gen;
+      p3_ax <= p2_ax;
+      p3_start <= p2_start; p3_abort <= p2_abort | abort[p2_ax]; p3_dir <= p2_fl[F_DIR];
+      p3_frame <= p2_frame;
+      // The step request of the coming commit, one flag per axis (d_* are from cycle 4i+5,
+      // stage 2 becomes stage 3 here); an abort at the commit edge itself still cancels it.
+      for (rk = 0; rk < NAXES; rk = rk + 1)
+        req_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen && d_req
+                         && ({29'd0, p2_ax} == rk);
+    end else begin
+      p1_abort <= p1_abort | abort[p1_ax];
+      p2_abort <= p2_abort | abort[p2_ax];
+    end
+    if (kc == 2'd1) begin
+      // Commit decisions, from the datapath registers of cycle 4i+4.
+      d_consume <= p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);
+      d_bad <= p2_fl[F_BAD];
+      d_gen <= p2_gen;
+      d_run <= ~c_ended;
+      d_ended <= c_ended;
+      d_ph <= c_ph_n;
+      d_decf <= c_decf_n;
+      d_stop <= p2_stop;
+      d_fstop <= p2_fstop;
+      d_req <= step_q;
+    end
+  end
+
+  // ---------------------------------------------------------------------------------------
+  // Outputs.
+  wire [NS-1:0] busy8;
+  genvar gk;
+  generate
+    for (gk = 0; gk < NS; gk = gk + 1) begin : g_busy
+      assign busy8[gk] = run_q[gk] | chain_q[gk] | starting_q[gk] | pending[gk];
+    end
+    for (gk = 0; gk < NAXES; gk = gk + 1) begin : g_out
+      assign busy_o[gk] = busy8[gk];
+      assign run_o[gk] = running_q[gk] | spend_q[gk] | fstart_q[gk];
+      assign phase_o[gk*2 +: 2] = run_q[gk] ? ph_q[gk*2 +: 2] : PH_IDLE;
+      assign req_o[gk] = p3_valid && req_pre_q[gk] && (kc == 2'd0) && !abort[gk];
+      assign tgt_load_o[gk] = cm_ok && p3_start && !d_consume && ({29'd0, cj} == gk);
+    end
+  endgenerate
+  assign g_o = g_q;
+  assign act_o = act_q[NAXES*2-1:0];
+  assign qn_o = qn_q[NAXES*2-1:0];
+  wire [NS-1:0] done8 = (busy_q & ~busy8) | consumed;
+  assign done_o = done8[NAXES-1:0];
+  generate
+    if (NAXES < NS) begin : g_tail
+      wire unused_tail = ^{refused[NS-1:NAXES], freed[NS-1:NAXES], done8[NS-1:NAXES]};
+    end
+  endgenerate
+  assign refused_o = refused[NAXES-1:0];
+  assign freed_o = freed[NAXES-1:0];
+  assign flush_o = flush[NAXES-1:0];
+  assign req_due_o = req_due;
+  assign tgt_dir_o = p3_dir;
+
+endmodule
+
+`default_nettype wire
