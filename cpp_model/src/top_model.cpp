@@ -181,39 +181,28 @@ void TopModel::tick(const WbPins& in) {
       // hexstep_wb.v drives the memory port from registers set in the cycle before a bus cycle:
       // an operation accepted at this edge starts at the first bus cycle after the next cycle.
       const uint64_t b0 = next_bus_cycle(c + 1);
-      if (widx < kNw) {
-        // Staging words live in the memory: a read waits for the next bus cycle, a write is a
-        // read-modify-write over two bus cycles (byte enables, implemented bits).
+      // A memory-backed word: a read acks at b0 + 2 with the word, a write is a read-modify-
+      // write (byte enables, implemented bits) that acks at b0 + 4.
+      auto mem_op = [&](Op::Kind read, Op::Kind write, unsigned word) {
         ack_n = false;
         op_n = Op{};
         op_n.axis = ak;
-        op_n.word = widx;
-        if (rd) {
-          op_n.kind = Op::kStgRead;
-          op_n.done = b0 + 2;
-        } else {
-          op_n.kind = Op::kStgWrite;
-          op_n.done = b0 + 4;
+        op_n.word = word;
+        op_n.kind = rd ? read : write;
+        op_n.done = b0 + (rd ? 2 : 4);
+        if (!rd) {
           op_n.wdat = wdat;
           op_n.bmask = bmask;
         }
+      };
+      if (widx < kNw) {
+        // Staging words live in the memory.
+        mem_op(Op::kStgRead, Op::kStgWrite, widx);
       } else if (widx >= W_CFG && widx < W_CFG + kNc) {
         // Configuration: read from its memory mirror; a write is a read-modify-write of the
         // mirror like a staging write, and the live register takes the merged word at the
         // mirror's write.
-        ack_n = false;
-        op_n = Op{};
-        op_n.axis = ak;
-        op_n.word = widx - W_CFG;
-        if (rd) {
-          op_n.kind = Op::kCfgRead;
-          op_n.done = b0 + 2;
-        } else {
-          op_n.kind = Op::kCfgWrite;
-          op_n.done = b0 + 4;
-          op_n.wdat = wdat;
-          op_n.bmask = bmask;
-        }
+        mem_op(Op::kCfgRead, Op::kCfgWrite, widx - W_CFG);
       } else {
         const uint64_t pos64 = static_cast<uint64_t>(a.pulse.position());
         uint32_t rdata = 0;
