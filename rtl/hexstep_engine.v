@@ -81,12 +81,10 @@ module hexstep_engine #(
   output wire               tgt_dir_o
 );
 
-  localparam [1:0] PH_IDLE = 2'd0, PH_ACCEL = 2'd1, PH_CRUISE = 2'd2, PH_DECEL = 2'd3;
+`include "hexstep_defs.vh"
   // Per-axis state is kept for all 8 slots (indexed by the 3-bit slot number); slots NAXES..7
   // stay in reset and are never sampled.
   localparam integer NS = 8;
-  // Slot flag bits.
-  localparam integer F_BAD = 0, F_EMPTY = 1, F_JOG = 2, F_DIR = 3, F_INIT = 4, F_DZ = 6;
   localparam [6:0] DUE_OFFSET = 7'd68;
   // SUB_W: bits of the overshoot and of the speed (their top bits) that the sub-tick division
   // uses (cpp_model kSubtickBits): the rounding of 12 bits costs at most 2^-12 / v cycles, a
@@ -133,10 +131,6 @@ module hexstep_engine #(
     end
   endgenerate
 
-  function [1:0] inc3(input [1:0] x);
-    inc3 = (x == 2'd2) ? 2'd0 : x + 2'd1;
-  endfunction
-
   // ---------------------------------------------------------------------------------------
   // Sample (edge ending cycle 4i - 1, a bus cycle): every axis's decision is computed from its
   // own flip-flops in parallel; a registered one-hot pointer (the axis of the next sample) selects
@@ -176,10 +170,6 @@ module hexstep_engine #(
   wire               s_stop = ~s_start & stop_q[si];
   wire               s_gen = a_gen[si];
 
-  // Slot word addresses.
-  function [4:0] slot_word(input [1:0] s, input [2:0] off);
-    slot_word = {s + 2'd1, off};   // 8 + 8s + off
-  endfunction
   // Addend word offset in bank 2 and limit offset in bank 3 by phase.
   function [2:0] a_off(input [1:0] ph, input decf, input stp);
     a_off = (ph == PH_ACCEL) ? 3'd0 : (ph == PH_DECEL) ? ((decf & ~stp) ? 3'd4 : 3'd2) : 3'd7;

@@ -103,7 +103,7 @@ module hexstep_wb #(
   localparam [NAXES-1:0] ALL = {NAXES{1'b1}};
   localparam [NC*32-1:0] CFG_RESET = {32'd0, 32'd0, 32'd0, 32'd1, 32'd1};
   localparam [5:0] LOADER_STEPS = 6'd25;
-  localparam [1:0] PH_ACCEL = 2'd1, PH_CRUISE = 2'd2, PH_DECEL = 2'd3;
+`include "hexstep_defs.vh"
   // Bus engine operations.
   localparam [2:0] OP_IDLE = 3'd0, OP_INIT = 3'd1, OP_SRD = 3'd2, OP_SWR = 3'd3, OP_CRD = 3'd4,
                    OP_CWR = 3'd5, OP_PUSH = 3'd6;
@@ -135,13 +135,6 @@ module hexstep_wb #(
   endfunction
   function [4:0] stg_word(input [4:0] i);
     stg_word = (i < 5'd5) ? i + 5'd3 : (i < 5'd10) ? i - 5'd2 : i - 5'd9;
-  endfunction
-  function [1:0] inc3(input [1:0] x);
-    inc3 = (x == 2'd2) ? 2'd0 : x + 2'd1;
-  endfunction
-  // Slot word: 8 + 8s + off.
-  function [4:0] slot_word(input [1:0] s, input [2:0] off);
-    slot_word = {s + 2'd1, off};
   endfunction
 
   // ---- state ----
@@ -357,7 +350,16 @@ module hexstep_wb #(
   wire l_bad = ~l_empty & (ljog_q ? l_bad_jog : l_bad_mv);
   wire [1:0] l_init = ljog_q ? (l_acc_z ? PH_CRUISE : PH_ACCEL) :
                       l_decel_now ? PH_DECEL : (~lz_q[1] ? PH_ACCEL : PH_CRUISE);
-  wire [6:0] l_flags = {l_dec_z, l_init, ldir_q, ljog_q, l_empty, l_bad};
+  reg  [6:0] l_flags;   // bit positions F_* of hexstep_defs.vh
+  always @* begin
+    l_flags = 7'd0;
+    l_flags[F_BAD]       = l_bad;
+    l_flags[F_EMPTY]     = l_empty;
+    l_flags[F_JOG]       = ljog_q;
+    l_flags[F_DIR]       = ldir_q;
+    l_flags[F_INIT +: 2] = l_init;
+    l_flags[F_DZ]        = l_dec_z;
+  end
 
   integer k, i;
   reg        hit, overrun, estop_rise, push_commit, drop;

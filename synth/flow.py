@@ -39,6 +39,7 @@ TARGETS = os.path.join(ROOT, "synth", "targets.json")
 WAIVERS = os.path.join(ROOT, "synth", "yosys_waivers.txt")
 RTL = ["rtl/hexstep_ram.v", "rtl/hexstep_pulse.v", "rtl/hexstep_engine.v", "rtl/hexstep_wb.v",
        "rtl/hexstep_top.v"]
+RTL_INCLUDES = ["rtl/hexstep_defs.vh"]  # `include'd by the RTL above (found next to it)
 BOARD_RTL = ["rtl/hexstep_spi_wb.v", "rtl/boards/hexstep_board_reset.v", "rtl/boards/hexstep_board.v"]
 PARAM_NAMES = ("NAXES", "ACC_W", "STEP_W", "DFRAC_W", "PULSE_W", "POS_W", "ADDR_W")
 # hexstep_top's RAM_STYLE follows the family (rtl/hexstep_ram.v): the iCE40 block RAM has its
@@ -66,7 +67,7 @@ def design_files(t):
     entry is hashed separately): what `design_sha` fingerprints. PicoRV32 is pinned by the .venv
     package version (scripts/deps/soc.pip) and the firmware image by its own bytes."""
     board = t["kind"] == "board"
-    files = list(RTL)
+    files = list(RTL) + RTL_INCLUDES
     if t.get("soc"):
         files += SOC_RTL + [f"soc/boards/{t['top']}.v"]
     elif board:
