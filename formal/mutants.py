@@ -62,6 +62,16 @@ MUTANTS = [
      "assign busy8[gk] = run_q[gk] | chain_q[gk] | starting_q[gk];", "engine", "bmc_tri"),
     ("abort keeps the owed steps", "hexstep_pulse.v",
      "      owed_d = 2'd0;", "      owed_d = owed_q;", "engine", "bmc_abort"),
+    ("stopping floors the speed instead of taking dec off", "hexstep_engine.v",
+     "PH_DECEL: c_sell = p2_stop ? 1'b0 :", "PH_DECEL: c_sell = p2_stop ? 1'b1 :", "engine",
+     "bmc_stop"),
+    ("STOP leaves the queue and the chain", "hexstep_engine.v",
+     "if (fstop_q[k]) begin", "if (fstop_q[k] && 1'b0) begin", "engine", "bmc_cnt"),
+    ("refused move started", "hexstep_engine.v",
+     "d_consume <= p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);",
+     "d_consume <= p2_start & p2_fl[F_EMPTY];", "engine", "bmc_cons"),
+    ("jog ends at its step count", "hexstep_engine.v",
+     "c_cnt_end = ~p2_fl[F_JOG] & zre_q;", "c_cnt_end = zre_q;", "engine", "bmc_cnt"),
 ]
 
 

@@ -10,7 +10,8 @@
 FORMAL_WORK := $(BUILD)/formal
 FORMAL_RUNS := pulse:prove pulse:prove_wide pulse:cover \
                wb:prove wb:prove_wide wb:cover spi_wb:prove \
-               engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain \
+               engine:bmc engine:bmc_tri engine:bmc_abort engine:bmc_chain engine:bmc_stop \
+               engine:bmc_cnt engine:bmc_cons \
                engine:cover_tri engine:cover_trap engine:cover_chain engine:cover_stop
 
 .PHONY: formal formal-mutants $(addprefix formal-,$(subst :,-,$(FORMAL_RUNS)))
