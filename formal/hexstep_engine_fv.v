@@ -62,6 +62,7 @@ module hexstep_engine_fv #(
   input wire stop_i,
   input wire abort_i
 );
+`include "hexstep_defs.vh"
   // ---- the moves ----
   (* anyconst *) reg        f_two;
   (* anyconst *) reg [2:0]  a_n, b_n, a_as, b_as, a_ds, b_ds;     // steps, acc_steps, dec_step
@@ -105,13 +106,21 @@ module hexstep_engine_fv #(
       default: valid = n == 3'd0;
     endcase
   endfunction
-  // Flags of the loader: {dec_zero, init phase, dir, jog, empty, bad}.
+  // Flags the loader computes for a move (bit positions F_*, phase codes PH_* of
+  // hexstep_defs.vh, the encoding hexstep_wb writes and hexstep_engine reads).
   function [6:0] flags(input [1:0] kind, input [2:0] as, input [2:0] ds, input [31:0] df,
                        input dir, input [47:0] dec, input [47:0] acc);
-    flags = {dec == 48'd0,
-             (kind == K_JOG) ? ((acc == 48'd0) ? 2'd2 : 2'd1) :
-             (ds == 3'd0 && df == 32'd0) ? 2'd3 : (as != 3'd0) ? 2'd1 : 2'd2,
-             dir, kind == K_JOG, kind == K_EMPTY, kind == K_BAD};
+    begin
+      flags = 7'd0;
+      flags[F_BAD] = kind == K_BAD;
+      flags[F_EMPTY] = kind == K_EMPTY;
+      flags[F_JOG] = kind == K_JOG;
+      flags[F_DIR] = dir;
+      flags[F_INIT +: 2] = (kind == K_JOG) ? ((acc == 48'd0) ? PH_CRUISE : PH_ACCEL) :
+                           (ds == 3'd0 && df == 32'd0) ? PH_DECEL :
+                           (as != 3'd0) ? PH_ACCEL : PH_CRUISE;
+      flags[F_DZ] = dec == 48'd0;
+    end
   endfunction
   always @* begin
     assume (valid(a_kind, a_n, a_as, a_ds, a_vs, a_vm, a_ve, a_vd, a_acc, a_dec, a_df));
@@ -200,7 +209,7 @@ module hexstep_engine_fv #(
   task put(input [1:0] bank, input [1:0] s, input [2:0] off, input [31:0] d);
     begin
       bwe = 4'd1 << bank;
-      bwa = {3'd0, s + 2'd1, off};
+      bwa = {3'd0, slot_word(s, off)};
       bwd = d;
     end
   endtask
@@ -487,9 +496,9 @@ module hexstep_engine_fv #(
     if (rst_i) begin
       f_acc <= 1'b0; f_cru <= 1'b0; f_dec <= 1'b0; f_gap <= 1'b0;
     end else begin
-      if (phase == 2'd1) f_acc <= 1'b1;
-      if (phase == 2'd2) f_cru <= 1'b1;
-      if (phase == 2'd3) f_dec <= 1'b1;
+      if (phase == PH_ACCEL) f_acc <= 1'b1;
+      if (phase == PH_CRUISE) f_cru <= 1'b1;
+      if (phase == PH_DECEL) f_dec <= 1'b1;
       if (f_nst != 2'd0 && !busy) f_gap <= 1'b1;   // busy fell after a start
     end
   end

@@ -21,6 +21,20 @@ class SpiPins {
   virtual void tick() = 0;
 };
 
+// set_pins() and miso() for a Verilated top with the bridge's pins spi_sck_i, spi_cs_n_i,
+// spi_mosi_i, spi_miso_o (hexstep_spi_wb and the tops built on it).
+template <class Top>
+void set_spi_pins(Top& top, bool sck, bool cs_n, bool mosi) {
+  top.spi_sck_i = sck;
+  top.spi_cs_n_i = cs_n;
+  top.spi_mosi_i = mosi;
+}
+template <class Top>
+bool spi_miso(Top& top) {
+  top.eval();
+  return top.spi_miso_o;
+}
+
 // Frame constants of rtl/hexstep_spi_wb.v.
 namespace spi {
 constexpr uint8_t kCmdWrite = 0xA0;   // | byte enables in bits 3:0

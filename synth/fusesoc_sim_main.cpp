@@ -29,14 +29,9 @@ class Bench : public hexstep::SpiPins {
   }
   ~Bench() override { top_->final(); }
   void set_pins(bool sck, bool cs_n, bool mosi) override {
-    top_->spi_sck_i = sck;
-    top_->spi_cs_n_i = cs_n;
-    top_->spi_mosi_i = mosi;
+    hexstep::set_spi_pins(*top_, sck, cs_n, mosi);
   }
-  bool miso() const override {
-    top_->eval();
-    return top_->spi_miso_o;
-  }
+  bool miso() const override { return hexstep::spi_miso(*top_); }
   void tick() override {
     top_->clk_i = 0;
     top_->eval();

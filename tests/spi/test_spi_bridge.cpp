@@ -56,14 +56,9 @@ class BridgeBench : public SpiPins {
   void set_waits(unsigned lo, unsigned hi) { lo_ = lo, hi_ = hi; }
 
   void set_pins(bool sck, bool cs_n, bool mosi) override {
-    top_->spi_sck_i = sck;
-    top_->spi_cs_n_i = cs_n;
-    top_->spi_mosi_i = mosi;
+    hexstep::set_spi_pins(*top_, sck, cs_n, mosi);
   }
-  bool miso() const override {
-    top_->eval();
-    return top_->spi_miso_o;
-  }
+  bool miso() const override { return hexstep::spi_miso(*top_); }
   void tick() override {
     top_->eval();
     const bool cyc = top_->wb_cyc_o, stb = top_->wb_stb_o, we = top_->wb_we_o;
