@@ -198,7 +198,9 @@ TEST(Cosim, RandomBusTrafficMatchesModelEveryEdge) {
   for (unsigned k = 0; k < kNumAxes; ++k) rises += b.rises(k);
   EXPECT_GT(rises, cycles / 2000);
   EXPECT_GT(stop_edges, cycles / 1000);
-  EXPECT_GT(starts, cycles / 20000);
+  // Coverage floor, not a correctness check: over 300,000 edges (the sanitizer run) seeds gave
+  // 12..29 starts (SEED 3539010261518161667: 12), so one per 20,000 edges failed by chance.
+  EXPECT_GT(starts, cycles / 40000);
   std::printf("%llu edges, %llu STEP rises, %llu starts, %llu stopping axis-edges; ops:",
               static_cast<unsigned long long>(b.cycle()), static_cast<unsigned long long>(rises),
               static_cast<unsigned long long>(starts), static_cast<unsigned long long>(stop_edges));
