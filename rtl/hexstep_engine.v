@@ -189,7 +189,6 @@ module hexstep_engine #(
   reg [NAXES-1:0] req_pre_q;
   integer rk;
   reg [2:0]  p3_ax;
-  reg [1:0]  p3_frame;
   // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
   reg        d_gen, d_consume, d_bad, d_run, d_ended, d_decf, d_stop, d_fstop, d_req;
   reg [1:0]  d_ph;
@@ -259,13 +258,25 @@ module hexstep_engine #(
     end
   endfunction
   reg [SUB_W:0]   dv0, dv1;
-  reg [4:0]       q_w;
+  reg             q0_w;                    // the last quotient bit (cycle 4i+8)
+  // Due cycle F + 68 - q of the request, with q = {h, q0} (h: the first four quotient bits):
+  // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
+  // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
+  // cycle 4i+7, when the fourth step of the slot's unit (p2's) is computed; the last step in
+  // 4i+8 only selects one.
+  reg  [6:0]      due_a_q, due_b_q;
+  wire            du = p2_ax[0];                            // the unit of stage 2's axis
+  wire [3:0]      dh = {dq_q[du][2:0], du ? dv1[0] : dv0[0]};
+  wire [6:0]      dbase = {p2_frame, 5'd0};
+  // The quotient bit of the last step (dstep) of the slot's unit, on operands selected before
+  // its compare.
+  wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
 
   // Limit > t, as the carry out of L + ~t (+ the carry of the low half).
   wire c_gt_lo, c_gt_hi;
   wire [31:0] unused_lo, unused_hi;
   assign {c_gt_lo, unused_lo} = {1'b0, llo_q} + {1'b0, ~t_lo_q};
-  assign {c_gt_hi, unused_hi} = {1'b0, lhi_q} + {1'b0, ~t_hi_q} + {32'd0, cl0_q};
+  assign {c_gt_hi, unused_hi} = add_ci(lhi_q, ~t_hi_q, cl0_q);
 
   // Stage-2 decisions (cycles 4i+5, 4i+6), from registers.
   reg        c_clamp, c_sell, c_stop_end, c_cnt_end, c_dec_trig, c_acc_end, c_ended;
@@ -276,7 +287,7 @@ module hexstep_engine #(
     // Division: a step of each unit; the quotient of the slot in stage 3 (cycle 4i+8).
     dv0 = dstep(dr_q[0], ds_q[0]);
     dv1 = dstep(dr_q[1], ds_q[1]);
-    q_w = dz_q[p3_ax[0]] ? 5'd0 : {dq_q[p3_ax[0]], p3_ax[0] ? dv1[0] : dv0[0]};
+    q0_w = q0_last;
 
     c_clamp = ct1_q | ~gt_q;
     case (p2_ph)
@@ -342,12 +353,12 @@ module hexstep_engine #(
     case (kc)
       2'd2: begin  // low words of S, P, addend, limit (cycle 4i+2)
         {cp0_q, pn_lo_q} <= {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0};
-        {ct0_q, t_lo_q} <= {1'b0, (p1_smask ? 32'd0 : rd0)} + {1'b0, rd2} + {32'd0, p1_cin};
+        {ct0_q, t_lo_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, p1_cin);
         llo_q <= rd3;
       end
       2'd3: begin  // high words (cycle 4i+3)
         {step_q, pn_hi_q} <= phi_sum;
-        {ct1_q, t_hi_q} <= {1'b0, (p1_smask ? 32'd0 : rd0)} + {1'b0, rd2} + {32'd0, ct0_q};
+        {ct1_q, t_hi_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, ct0_q);
         cl0_q <= c_gt_lo;
         lhi_q <= rd3;
       end
@@ -366,6 +377,10 @@ module hexstep_engine #(
         sell_q <= c_sell;
       end
     endcase
+    if (kc == 2'd3) begin
+      due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : dbase + (DUE_OFFSET - 7'd31) + {2'b00, ~dh, 1'b0};
+      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : dbase + (DUE_OFFSET - 7'd30) + {2'b00, ~dh, 1'b0};
+    end
     // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
     // the axis's parity), a restoring step at every other edge.
     if (kc == 2'd3) begin
@@ -383,7 +398,7 @@ module hexstep_engine #(
       dq_q[1] <= {dq_q[1][2:0], dv1[0]};
     end
   end
-  wire [32:0] phi_sum = {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0} + {32'd0, cp0_q};
+  wire [32:0] phi_sum = add_ci(p1_pmask ? 32'd0 : rd1, rd0, cp0_q);
 
   // ---------------------------------------------------------------------------------------
   // Control: next state of every axis.
@@ -401,7 +416,7 @@ module hexstep_engine #(
     sf_d = sf_q; spend_d = spend_q; ppend_d = ppend_q; fstart_d = fstart_q; fstop_d = fstop_q;
     flush = {NS{1'b0}}; pop = {NS{1'b0}}; consumed = {NS{1'b0}};
     refused = {NS{1'b0}}; freed = {NS{1'b0}};
-    req_due = {p3_frame, 5'd0} + DUE_OFFSET - {2'b00, q_w};
+    req_due = q0_w ? due_a_q : due_b_q;
     pos = 2'd0; sfk = 21'd0;
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
@@ -549,7 +564,6 @@ module hexstep_engine #(
       p3_we <= p2_valid & p2_gen;
       p3_ax <= p2_ax;
       p3_start <= p2_start; p3_abort <= p2_abort | abort[p2_ax]; p3_dir <= p2_fl[F_DIR];
-      p3_frame <= p2_frame;
       // The step request of the coming commit, one flag per axis (d_* are from cycle 4i+5,
       // stage 2 becomes stage 3 here); an abort at the commit edge itself still cancels it.
       for (rk = 0; rk < NAXES; rk = rk + 1)

@@ -64,6 +64,7 @@ module hexstep_pulse #(
 );
 
   localparam [PULSE_W-1:0] T_ONE = 1;
+  localparam [PULSE_W-1:0] T_TWO = 2;
 
   // State.
   reg               v0_q, v0_d, v1_q, v1_d, v2_q, v2_d;  // request entries valid
@@ -155,8 +156,12 @@ module hexstep_pulse #(
     if (tgt_load_i) begin
       tgt_d = tgt_dir_i;
     end
-    cso_d = over(cs_d);
-    cdo_d = over(cd_d);
+    // The same as over(cs_d), over(cd_d), without the counters' next values on the path: a
+    // reload is over if the loaded value is; a counting counter (at least 2, as its flag is 0)
+    // is over next if it is at 2 now.
+    cso_d = (rise || fall) ? (step_q ? over(step_low_i) : over(step_high_i)) :
+            (cso_q || cs_q == T_TWO);
+    cdo_d = rise ? over(dir_hold_i) : dir_change ? over(dir_setup_i) : (cdo_q || cd_q == T_TWO);
   end
 
   always @(posedge clk_i) begin

@@ -96,7 +96,6 @@ module hexstep_wb #(
                    W_CFG = 5'd22;
   localparam [4:0] NW = 5'd17;          // staging words per axis (STEPS..DEC_FRAC)
   localparam integer NC = 5;            // config words per axis (STEP_HIGH..POLARITY)
-  localparam [4:0] W_CFG_END = W_CFG + 5'd5;
   localparam [31:0]  ID_VALUE  = 32'h4858_5354;  // "HXST"
   localparam [7:0]   VER_MAJOR = 8'd1;
   localparam [7:0]   VER_MINOR = 8'd0;
@@ -143,7 +142,7 @@ module hexstep_wb #(
   reg              irq_q, irq_d;
   reg              es1_q, es2_q;              // e-stop pin synchronizer
   reg              estop_q, estop_d;          // latched e-stop
-  reg  [NAXES-1:0] abort_cmd_q, abort_cmd_d;  // ABORT written at the last edge
+  reg  [NAXES-1:0] abort_cmd_d;               // ABORT written at this edge
   reg  [NAXES*3-1:0]  errf_q, errf_d;         // {estop, overrun, move} per axis
   // POS_HI: the bits above 31 latched by a POS_LO read (POS_W <= 32: the sign only).
   localparam integer PHW = (POS_W > 32) ? POS_W - 32 : 1;
@@ -185,9 +184,15 @@ module hexstep_wb #(
   wire        blk_lo = (blk[ADDR_W-8:4] == {(ADDR_W-11){1'b0}});   // block number < 16
   wire [4:0]  widx  = wb_adr_i[6:2];
   wire        g_hit = blk_lo && (blk[3:0] == 4'd0);
-  wire [3:0]  axn   = blk[3:0] - 4'd2;
-  wire        a_hit = blk_lo && (blk[3:0] >= 4'd2) && ({28'd0, axn} < NAXES);
-  wire [2:0]  ak    = axn[2:0];
+  // Decodes as lookups in constant masks (one LUT each, no comparator): blocks 2..NAXES+1;
+  // staging words 0..NW-1; configuration words W_CFG..W_CFG+NC-1.
+  localparam [15:0] AXIS_BLKS = ((16'd1 << NAXES) - 16'd1) << 2;
+  localparam [31:0] STG_WORDS = (32'd1 << NW) - 32'd1;
+  localparam [31:0] CFG_WORDS = ((32'd1 << NC) - 32'd1) << W_CFG;
+  wire        a_hit = blk_lo && AXIS_BLKS[blk[3:0]];
+  wire        w_stg = STG_WORDS[widx];
+  wire        w_cfg = CFG_WORDS[widx];
+  wire [2:0]  ak    = blk[2:0] - 3'd2;     // the axis (block number - 2, modulo 8)
   wire        unused_adr = &{1'b0, wb_adr_i[1:0]};
   wire        bus_cyc = (kc_i == 2'd3);
   reg         arm_q;                             // an operation was there in the last cycle
@@ -197,7 +202,10 @@ module hexstep_wb #(
 
   wire [31:0] irq_mask = {8'd0, {(8-NAXES){1'b0}}, ALL, {(8-NAXES){1'b0}}, ALL,
                           {(8-NAXES){1'b0}}, ALL};
-  wire [NAXES-1:0] abort_w = abort_cmd_q | {NAXES{estop_q}};
+  // The engine's abort: ABORT written at the last edge or the e-stop latched, as one register
+  // (so that the output stages see a flip-flop, not a gate).
+  reg  [NAXES-1:0] abort_q;
+  wire [NAXES-1:0] abort_w = abort_q;
   // abort_w and flush_i padded to 8 axes, for indexing with a 3-bit axis number.
   wire [7:0] abort8, flush8;
   generate
@@ -325,6 +333,11 @@ module hexstep_wb #(
     endcase
   endfunction
 
+  // Steps whose compare is the high word of a 64-bit compare (the low word's borrow enters).
+  function ld_hi_cmp(input [5:0] j);
+    ld_hi_cmp = (j == 6'd8) || (j == 6'd12) || (j == 6'd16) || (j == 6'd20);
+  endfunction
+
   // ---- memory port of the bus engine (bus cycles) ----
   // The word of a staging/configuration operation: bank, word, implemented bits.
   wire        mw_cfg = (op_q == OP_CRD) || (op_q == OP_CWR);
@@ -332,7 +345,6 @@ module hexstep_wb #(
   wire [4:0]  mw_word = mw_cfg ? owd_q : stg_word(owd_q);
   wire [31:0] mw_mask = mw_cfg ? cfg_mask(owd_q[2:0]) : stg_mask(owd_q);
   wire [31:0] osel_mask = {{8{osel_q[3]}}, {8{osel_q[2]}}, {8{osel_q[1]}}, {8{osel_q[0]}}};
-  reg         cfg_we;                          // the merged word also goes to the live register
   reg         m_re, m_init;
   reg  [1:0]  m_rbank;
   reg  [7:0]  m_raddr, m_waddr;
@@ -362,7 +374,7 @@ module hexstep_wb #(
   end
 
   integer k, i;
-  reg        hit, overrun, estop_rise, push_commit, drop;
+  reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
   reg [1:0]  qv;
   reg [5:0]  pdst;
@@ -380,10 +392,18 @@ module hexstep_wb #(
     lh_d = lh_q; lb_d = lb_q; lz_d = lz_q; lg_d = lg_q; ljog_d = ljog_q; ldir_d = ldir_q;
     ack_d = 1'b0;
     dat_d = 32'h0;
-    cfg_we = 1'b0;
-    push_commit = 1'b0;
     overrun = 1'b0;
     cmp = 1'b0; cmp_unused = 32'd0; ldw = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
+
+    // The operation registers take the bus's address, data and byte enables on every idle
+    // cycle (they are read only within an operation, which a request starts from idle), so
+    // that the request decode is not on their paths.
+    if (idle) begin
+      oax_d = ak;
+      owd_d = w_stg ? widx : widx - W_CFG;
+      odat_d = wb_dat_i;
+      osel_d = wb_sel_i;
+    end
 
     // ---- global registers ----
     estop_rise = es2_q & ~estop_q;
@@ -397,15 +417,11 @@ module hexstep_wb #(
         if (wr && widx == G_IRQ_PEND) pend_d = pend_q & ~wdat;
       end else if (a_hit) begin
         if (rd) dat_d = ard;
-        if (widx < NW || (widx >= W_CFG && widx < W_CFG_END)) begin
+        if (w_stg || w_cfg) begin
           // Staging word or configuration: a memory operation (configuration writes update the
           // live register when the merged word is written to its mirror).
           ack_d = 1'b0;
-          op_d = (widx < NW) ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
-          oax_d = ak;
-          owd_d = (widx < NW) ? widx : widx - W_CFG;
-          odat_d = wb_dat_i;
-          osel_d = wb_sel_i;
+          op_d = w_stg ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
           oiss_d = 1'b0;
           ocnt_d = 6'd0;
         end
@@ -417,7 +433,6 @@ module hexstep_wb #(
           end else if (!drop) begin
             ack_d = 1'b0;
             op_d = OP_PUSH;
-            oax_d = ak;
             ocnt_d = 6'd0;
             otail_d = (qv == 2'd0) ? inc3(act_i[ak*2 +: 2]) : inc3(inc3(act_i[ak*2 +: 2]));
             ocan_d = flush8[ak];
@@ -456,7 +471,6 @@ module hexstep_wb #(
           end
         end
         if (bus_go && oiss_q && ocnt_q == 6'd1) begin
-          cfg_we = (op_q == OP_CWR);
           ack_d = 1'b1;
           op_d = OP_IDLE;
           ocnt_d = 6'd0;
@@ -466,7 +480,6 @@ module hexstep_wb #(
         if (flush8[oax_q]) ocan_d = 1'b1;
         if (bus_go) begin
           if (ocnt_q == LOADER_STEPS) begin
-            push_commit = pcommit_q;
             ack_d = 1'b1;
             op_d = OP_IDLE;
           end
@@ -476,7 +489,13 @@ module hexstep_wb #(
           // The data of step ocnt - 1 (read three cycles ago, registered): checks, then the
           // word to write at the next bus cycle.
           ldw = rdq_q;
-          {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q};
+          // held - data - borrow, one carry chain; cmp is the borrow out. lb is the borrow of
+          // a low word's compare (steps 6, 10, 14, 18) until the high word's (8, 12, 16, 20)
+          // has used it, and 0 at every other compare (cleared at step 0 and by each use), so
+          // no decode sits in front of the chain.
+          {cmp, cmp_unused} = add_ci(lh_q, ~rdq_q, ~lb_q);
+          cmp = ~cmp;
+          if (ocnt_q == 6'd1 || ld_hi_cmp(ocnt_q - 6'd1)) lb_d = 1'b0;
           case (ocnt_q - 6'd1)
             6'd0: begin ljog_d = ldw[1]; ldir_d = ldw[0]; end
             6'd1: begin lh_d = ldw; lz_d[0] = (ldw == 32'd0); end
@@ -490,23 +509,19 @@ module hexstep_wb #(
             6'd6: begin lb_d = cmp; lz_d[6] = (ldw == 32'd0); end
             6'd7: begin lh_d = ldw; lz_d[5] = (ldw == 32'd0); end
             6'd8: begin
-              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
               lg_d[2] = cmp; lz_d[7] = (ldw == 32'd0);
             end
             6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = ldw;
             6'd10: begin lb_d = cmp; lz_d[8] = (ldw == 32'd0); end
             6'd12: begin
-              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
               lg_d[3] = cmp; lz_d[9] = (ldw == 32'd0);
             end
             6'd14: lb_d = cmp;
             6'd16: begin
-              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
               lg_d[4] = cmp;
             end
             6'd18: begin lb_d = cmp; lz_d[10] = (ldw == 32'd0); ldw = ~rdq_q; end
             6'd20: begin
-              {cmp, cmp_unused} = {1'b0, lh_q} - {1'b0, rdq_q} - {32'd0, lb_q};
               lg_d[5] = cmp; lz_d[11] = (ldw == 32'd0); ldw = ~rdq_q;
             end
             6'd21: lz_d[12] = (ldw == 32'd0);
@@ -525,7 +540,7 @@ module hexstep_wb #(
       if (hit && wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
       if (hit && rd && widx == W_POS_LO) poshi_d[k*PHW +: PHW] = pos_up[k*PHW +: PHW];
       for (i = 0; i < NC; i = i + 1)
-        if (cfg_we && pcax_q[k] && pcw_q[i])
+        if (pcfg_q[k*NC+i])
           cfg_d[(k*NC+i)*32 +: 32] = odat_q;
       eset = {estop_rise, overrun & hit, refused_i[k]};
       errf_d[k*3 +: 3] = errf_d[k*3 +: 3] | eset;
@@ -591,9 +606,11 @@ module hexstep_wb #(
   end
 
   reg        pre_q, pinit_q;
-  reg        pcommit_q;                      // the loader commits at the next bus cycle
-  reg [7:0]  pcax_q;                         // a configuration write: its axis, one-hot
-  reg [NC-1:0] pcw_q;                        // ... and its word, one-hot
+  // Strobes for the bus cycle, registered at the cycle before it (high only in the bus cycle):
+  reg        pcommit_q;                      // the loader commits (push_o)
+  reg [NAXES*NC-1:0] pcfg_q;                 // a configuration write's merged word goes to
+                                             // live register {axis, word} (one-hot)
+  integer    pk, pi;
   reg [1:0]  prbank_q;
   reg [7:0]  praddr_q, pwaddr_q;
   reg [3:0]  pwe_q;
@@ -603,7 +620,20 @@ module hexstep_wb #(
       arm_q <= 1'b0;
       pre_q <= 1'b0;
       pwe_q <= 4'd0;
-    end else if (proc_cyc) begin
+      pcommit_q <= 1'b0;
+      pcfg_q <= {NAXES*NC{1'b0}};
+    end else begin
+      // Decided in the cycle before the commit's bus cycle, with the cancel of that cycle's edge
+      // (the engine drops the push itself if the queue is flushed at the commit's edge). The
+      // operation's state does not change at that edge, so these equal the bus cycle's
+      // conditions (bus_go and the operation's step).
+      pcommit_q <= proc_cyc && (op_q == OP_PUSH) && (ocnt_q == LOADER_STEPS) && !ocan_d;
+      for (pk = 0; pk < NAXES; pk = pk + 1)
+        for (pi = 0; pi < NC; pi = pi + 1)
+          pcfg_q[pk*NC+pi] <= proc_cyc && (op_q == OP_CWR) && oiss_q && (ocnt_q == 6'd1) &&
+                              ({29'd0, oax_q} == pk) && ({27'd0, owd_q} == pi);
+    end
+    if (!rst_i && proc_cyc) begin
       arm_q <= (op_q != OP_IDLE);
       pre_q <= m_re;
       pwe_q <= m_we;
@@ -611,18 +641,13 @@ module hexstep_wb #(
     if (proc_cyc) begin
       pinit_q <= m_init;  prbank_q <= m_rbank;  praddr_q <= m_raddr;
       pwaddr_q <= m_waddr;  pwdata_q <= m_wdata;
-      // Decided in the cycle before the commit's bus cycle, with the cancel of that cycle's edge
-      // (the engine drops the push itself if the queue is flushed at the commit's edge).
-      pcommit_q <= (op_q == OP_PUSH) && (ocnt_q == LOADER_STEPS) && !ocan_d;
-      pcax_q <= 8'd1 << oax_q;
-      pcw_q <= {{(NC-1){1'b0}}, 1'b1} << owd_q[2:0];
     end
   end
   always @(posedge clk_i) begin
     if (rst_i) begin
       ack_q <= 1'b0;  dat_q <= 32'h0;  irq_q <= 1'b0;
       es1_q <= 1'b0;  es2_q <= 1'b0;  estop_q <= 1'b0;
-      abort_cmd_q <= {NAXES{1'b0}};
+      abort_q <= {NAXES{1'b0}};
       errf_q <= {NAXES*3{1'b0}};
       poshi_q <= {NAXES*PHW{1'b0}};  irq_en_q <= 32'h0;  pend_q <= 32'h0;
       cfg_q <= {NAXES{CFG_RESET}};
@@ -631,7 +656,7 @@ module hexstep_wb #(
     end else begin
       ack_q <= ack_d;  dat_q <= dat_d;  irq_q <= irq_d;
       es1_q <= estop_i;  es2_q <= es1_q;  estop_q <= estop_d;
-      abort_cmd_q <= abort_cmd_d;
+      abort_q <= abort_cmd_d | {NAXES{estop_d}};
       errf_q <= errf_d;
       poshi_q <= poshi_d;  irq_en_q <= irq_en_d;  pend_q <= pend_d;
       cfg_q <= cfg_d;
@@ -655,7 +680,7 @@ module hexstep_wb #(
   assign start_w_o = (wr && g_hit && widx == G_START) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
   assign stop_w_o  = (wr && g_hit && widx == G_STOP) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
   assign abort_o   = abort_w;
-  assign push_o       = push_commit;
+  assign push_o       = pcommit_q;
   assign push_axis_o  = oax_q;
   assign push_flags_o = l_flags;
   // The port registers are read by the engine on the bus cycle only; an armed operation makes
