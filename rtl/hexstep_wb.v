@@ -403,6 +403,11 @@ module hexstep_wb #(
       owd_d = w_stg ? widx : widx - W_CFG;
       odat_d = wb_dat_i;
       osel_d = wb_sel_i;
+      oiss_d = 1'b0;
+      ocnt_d = 6'd0;
+      // A push's slot and cancel (a flush at the request's edge drops it).
+      otail_d = (qn_i[ak*2 +: 2] == 2'd0) ? inc3(act_i[ak*2 +: 2]) : inc3(inc3(act_i[ak*2 +: 2]));
+      ocan_d = flush8[ak];
     end
 
     // ---- global registers ----
@@ -422,8 +427,6 @@ module hexstep_wb #(
           // live register when the merged word is written to its mirror).
           ack_d = 1'b0;
           op_d = w_stg ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
-          oiss_d = 1'b0;
-          ocnt_d = 6'd0;
         end
         if (wr && widx == W_CMD && wdat[0]) begin
           drop = estop_q | abort8[ak];
@@ -433,9 +436,6 @@ module hexstep_wb #(
           end else if (!drop) begin
             ack_d = 1'b0;
             op_d = OP_PUSH;
-            ocnt_d = 6'd0;
-            otail_d = (qv == 2'd0) ? inc3(act_i[ak*2 +: 2]) : inc3(inc3(act_i[ak*2 +: 2]));
-            ocan_d = flush8[ak];
           end
         end
       end else if (rd) begin
