@@ -258,7 +258,6 @@ module hexstep_engine #(
     end
   endfunction
   reg [SUB_W:0]   dv0, dv1;
-  reg             q0_w;                    // the last quotient bit (cycle 4i+8)
   // Due cycle F + 68 - q of the request, with q = {h, q0} (h: the first four quotient bits):
   // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
   // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
@@ -268,8 +267,9 @@ module hexstep_engine #(
   wire            du = p2_ax[0];                            // the unit of stage 2's axis
   wire [3:0]      dh = {dq_q[du][2:0], du ? dv1[0] : dv0[0]};
   wire [6:0]      dbase = {p2_frame, 5'd0};
-  // The quotient bit of the last step (dstep) of the slot's unit, on operands selected before
-  // its compare.
+  wire [6:0]      due_h = dbase + (DUE_OFFSET - 7'd31) + {2'b00, ~dh, 1'b0};   // q0 = 1
+  // The last quotient bit (cycle 4i+8): the last step (dstep) of the slot's unit, on operands
+  // selected before its compare.
   wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
 
   // Limit > t, as the carry out of L + ~t (+ the carry of the low half).
@@ -287,7 +287,6 @@ module hexstep_engine #(
     // Division: a step of each unit; the quotient of the slot in stage 3 (cycle 4i+8).
     dv0 = dstep(dr_q[0], ds_q[0]);
     dv1 = dstep(dr_q[1], ds_q[1]);
-    q0_w = q0_last;
 
     c_clamp = ct1_q | ~gt_q;
     case (p2_ph)
@@ -378,8 +377,8 @@ module hexstep_engine #(
       end
     endcase
     if (kc == 2'd3) begin
-      due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : dbase + (DUE_OFFSET - 7'd31) + {2'b00, ~dh, 1'b0};
-      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : dbase + (DUE_OFFSET - 7'd30) + {2'b00, ~dh, 1'b0};
+      due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
+      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h + 7'd1;
     end
     // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
     // the axis's parity), a restoring step at every other edge.
@@ -416,7 +415,7 @@ module hexstep_engine #(
     sf_d = sf_q; spend_d = spend_q; ppend_d = ppend_q; fstart_d = fstart_q; fstop_d = fstop_q;
     flush = {NS{1'b0}}; pop = {NS{1'b0}}; consumed = {NS{1'b0}};
     refused = {NS{1'b0}}; freed = {NS{1'b0}};
-    req_due = q0_w ? due_a_q : due_b_q;
+    req_due = q0_last ? due_a_q : due_b_q;
     pos = 2'd0; sfk = 21'd0;
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;

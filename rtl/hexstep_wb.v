@@ -205,15 +205,14 @@ module hexstep_wb #(
   // The engine's abort: ABORT written at the last edge or the e-stop latched, as one register
   // (so that the output stages see a flip-flop, not a gate).
   reg  [NAXES-1:0] abort_q;
-  wire [NAXES-1:0] abort_w = abort_q;
-  // abort_w and flush_i padded to 8 axes, for indexing with a 3-bit axis number.
+  // abort_q and flush_i padded to 8 axes, for indexing with a 3-bit axis number.
   wire [7:0] abort8, flush8;
   generate
     if (NAXES < 8) begin : g_pad
-      assign abort8 = {{(8-NAXES){1'b0}}, abort_w};
+      assign abort8 = {{(8-NAXES){1'b0}}, abort_q};
       assign flush8 = {{(8-NAXES){1'b0}}, flush_i};
     end else begin : g_full
-      assign abort8 = abort_w;
+      assign abort8 = abort_q;
       assign flush8 = flush_i;
     end
   endgenerate
@@ -679,7 +678,7 @@ module hexstep_wb #(
   // START and STOP: strobes at the request's edge; ABORT: a registered strobe for the next.
   assign start_w_o = (wr && g_hit && widx == G_START) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
   assign stop_w_o  = (wr && g_hit && widx == G_STOP) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
-  assign abort_o   = abort_w;
+  assign abort_o   = abort_q;
   assign push_o       = pcommit_q;
   assign push_axis_o  = oax_q;
   assign push_flags_o = l_flags;
