@@ -351,13 +351,13 @@ module hexstep_engine #(
   always @(posedge clk_i) begin
     case (kc)
       2'd2: begin  // low words of S, P, addend, limit (cycle 4i+2)
-        {cp0_q, pn_lo_q} <= p_sum;
-        {ct0_q, t_lo_q} <= t_sum;
+        {cp0_q, pn_lo_q} <= {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0};
+        {ct0_q, t_lo_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, p1_cin);
         llo_q <= rd3;
       end
       2'd3: begin  // high words (cycle 4i+3)
-        {step_q, pn_hi_q} <= p_sum;
-        {ct1_q, t_hi_q} <= t_sum;
+        {step_q, pn_hi_q} <= phi_sum;
+        {ct1_q, t_hi_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, ct0_q);
         cl0_q <= c_gt_lo;
         lhi_q <= rd3;
       end
@@ -383,7 +383,7 @@ module hexstep_engine #(
     // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
     // the axis's parity), a restoring step at every other edge.
     if (kc == 2'd3) begin
-      dr_q[p1_ax[0]] <= p_sum[31 -: SUB_W];
+      dr_q[p1_ax[0]] <= phi_sum[31 -: SUB_W];
       ds_q[p1_ax[0]] <= rd0[31 -: SUB_W];
       dz_q[p1_ax[0]] <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
       dq_q[p1_ax[0]] <= 4'd0;
@@ -397,10 +397,7 @@ module hexstep_engine #(
       dq_q[1] <= {dq_q[1][2:0], dv1[0]};
     end
   end
-  // One adder for each sum, used for the low words in cycle 4i+2 and the high words in 4i+3
-  // (the operands come from the same banks; the carry in is the low word's carry out then).
-  wire [32:0] p_sum = add_ci(p1_pmask ? 32'd0 : rd1, rd0, (kc == 2'd3) & cp0_q);
-  wire [32:0] t_sum = add_ci(p1_smask ? 32'd0 : rd0, rd2, (kc == 2'd3) ? ct0_q : p1_cin);
+  wire [32:0] phi_sum = add_ci(p1_pmask ? 32'd0 : rd1, rd0, cp0_q);
 
   // ---------------------------------------------------------------------------------------
   // Control: next state of every axis.
