@@ -71,6 +71,8 @@ module hexstep_engine_fv #(
   (* anyconst *) reg [47:0] a_acc, a_dec, b_acc, b_dec;
   (* anyconst *) reg [31:0] a_df, b_df;                          // DEC_FRAC aligned to bit 31
   (* anyconst *) reg [PULSE_W-1:0] f_high, f_low, f_setup, f_hold;
+  // over_i of the output stage: each timing value at most 1.
+  wire [3:0] f_over = {f_hold <= 1, f_setup <= 1, f_low <= 1, f_high <= 1};
   (* anyconst *) reg        f_sinv, f_dinv;
   // Kind of each move: a move, a jog, a refused move (it breaks a refusal rule), an empty move
   // (steps 0). Only with FV_KINDS; elsewhere both are moves.
@@ -299,6 +301,7 @@ module hexstep_engine_fv #(
 
   // ---- engine + output stage ----
   wire        busy, run, done, refused, freed, flush, accepts, pending, tgt, req, tgt_load;
+  wire        accepts_n, pending_n;
   wire        tgt_dir, step, dir;
   wire [1:0]  act, qn, phase;
   wire [6:0]  req_due;
@@ -313,7 +316,8 @@ module hexstep_engine_fv #(
     .bus_we_i (bwe), .bus_waddr_i (bwa), .bus_wdata_i (bwd), .bus_init_i (1'b0),
     .act_o (act), .qn_o (qn), .busy_o (busy), .run_o (run), .phase_o (phase), .done_o (done),
     .refused_o (refused), .freed_o (freed), .flush_o (flush),
-    .accepts_i (accepts), .pending_i (pending), .tgt_i (tgt),
+    .pending_i (pending), .tgt_i (tgt),
+    .accepts_n_i (accepts_n), .pending_n_i (pending_n),
     .req_o (req), .req_due_o (req_due), .tgt_load_o (tgt_load), .tgt_dir_o (tgt_dir)
   );
   hexstep_pulse #(.PULSE_W (PULSE_W), .POS_W (POS_W)) u_pulse (
@@ -321,8 +325,9 @@ module hexstep_engine_fv #(
     .abort_i (abort_i), .req_i (req), .req_due_i (req_due),
     .tgt_load_i (tgt_load), .tgt_dir_i (tgt_dir),
     .step_high_i (f_high), .step_low_i (f_low), .dir_setup_i (f_setup), .dir_hold_i (f_hold),
-    .step_inv_i (f_sinv), .dir_inv_i (f_dinv),
+    .over_i (f_over), .step_inv_i (f_sinv), .dir_inv_i (f_dinv),
     .accepts_o (accepts), .pending_o (pending), .tgt_o (tgt),
+    .accepts_n_o (accepts_n), .pending_n_o (pending_n),
     .step_o (step), .dir_o (dir), .pos_o (pos)
   );
 

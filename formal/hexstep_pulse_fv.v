@@ -30,13 +30,15 @@ module hexstep_pulse_fv #(
 );
   localparam integer CW = PULSE_W + 1;
   (* anyconst *) reg [PULSE_W-1:0] f_high, f_low, f_setup, f_hold;
+  // over_i of the output stage: each timing value at most 1.
+  wire [3:0] f_over = {f_hold <= 1, f_setup <= 1, f_low <= 1, f_high <= 1};
   (* anyconst *) reg               f_sinv, f_dinv;
   (* anyconst *) reg [6:0]         f_g0;
 
   reg [6:0] g;
   always @(posedge clk_i) g <= rst_i ? f_g0 : g + 7'd1;
 
-  wire             accepts, pending, tgt, step, dir;
+  wire             accepts, pending, accepts_n, pending_n, tgt, step, dir;
   wire [POS_W-1:0] pos;
 
   hexstep_pulse #(.PULSE_W (PULSE_W), .POS_W (POS_W)) u_dut (
@@ -44,8 +46,9 @@ module hexstep_pulse_fv #(
     .abort_i (abort_i), .req_i (req_i), .req_due_i (req_due_i),
     .tgt_load_i (tgt_load_i), .tgt_dir_i (tgt_dir_i),
     .step_high_i (f_high), .step_low_i (f_low), .dir_setup_i (f_setup), .dir_hold_i (f_hold),
-    .step_inv_i (f_sinv), .dir_inv_i (f_dinv),
+    .over_i (f_over), .step_inv_i (f_sinv), .dir_inv_i (f_dinv),
     .accepts_o (accepts), .pending_o (pending), .tgt_o (tgt),
+    .accepts_n_o (accepts_n), .pending_n_o (pending_n),
     .step_o (step), .dir_o (dir), .pos_o (pos)
   );
 
@@ -116,6 +119,7 @@ module hexstep_pulse_fv #(
   // ---- previous cycle ----
   reg             p_have = 1'b0, p_may, p_turn, p_dir;
   reg [POS_W-1:0] p_pos;
+  reg             p_acc_n, p_pend_n;   // accepts_n_o, pending_n_o at the last edge
   wire [CW-1:0]   lo_t = (f_low == 0) ? 1 : {1'b0, f_low};
   wire [CW-1:0]   su_t = (f_setup == 0) ? 1 : {1'b0, f_setup};
   wire [CW-1:0]   ho_t = (f_hold == 0) ? 1 : {1'b0, f_hold};
@@ -129,6 +133,8 @@ module hexstep_pulse_fv #(
     p_turn <= f_turn;
     p_dir <= dir_l;
     p_pos <= pos;
+    p_acc_n <= accepts_n;
+    p_pend_n <= pending_n;
   end
 
   always @* if (!rst_i) begin
@@ -140,6 +146,8 @@ module hexstep_pulse_fv #(
       assert (f_rise == p_may);
       assert (f_dchg == p_turn);
       assert (pos == (!f_rise ? p_pos : p_dir ? p_pos + 1'b1 : p_pos - 1'b1));
+      // The next-value outputs (the engine registers its start decision from them).
+      assert (accepts == p_acc_n && pending == p_pend_n);
     end else begin
       // Reset state: STEP low, DIR positive, position 0, nothing waiting.
       assert (!step_l && dir_l && pos == {POS_W{1'b0}} && accepts && !pending);

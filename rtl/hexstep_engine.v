@@ -72,8 +72,9 @@ module hexstep_engine #(
   output wire [NAXES-1:0]   freed_o,        // a queue entry becomes free at this edge
   output wire [NAXES-1:0]   flush_o,        // the queue is flushed at this edge
   // Output stages.
-  input  wire [NAXES-1:0]   accepts_i,
-  input  wire [NAXES-1:0]   pending_i,
+  input  wire [NAXES-1:0]   pending_i,      // requests or owed steps wait
+  input  wire [NAXES-1:0]   accepts_n_i,    // a request can be taken after this edge
+  input  wire [NAXES-1:0]   pending_n_i,    // pending_i after this edge
   input  wire [NAXES-1:0]   tgt_i,
   output wire [NAXES-1:0]   req_o,
   output wire [6:0]         req_due_o,      // due cycle of the request (one request per edge)
@@ -112,18 +113,20 @@ module hexstep_engine #(
   reg  [NS*21-1:0] sf_d;
 
   // The per-axis inputs, padded to 8 slots.
-  wire [NS-1:0] accepts, pending, tgt, abort, start_w, stop_w;
+  wire [NS-1:0] pending, accepts_n, pending_n, tgt, abort, start_w, stop_w;
   generate
     if (NAXES < NS) begin : g_pad
-      assign accepts = {{(NS-NAXES){1'b0}}, accepts_i};
       assign pending = {{(NS-NAXES){1'b0}}, pending_i};
+      assign accepts_n = {{(NS-NAXES){1'b0}}, accepts_n_i};
+      assign pending_n = {{(NS-NAXES){1'b0}}, pending_n_i};
       assign tgt     = {{(NS-NAXES){1'b0}}, tgt_i};
       assign abort   = {{(NS-NAXES){1'b0}}, abort_i};
       assign start_w = {{(NS-NAXES){1'b0}}, start_w_i};
       assign stop_w  = {{(NS-NAXES){1'b0}}, stop_w_i};
     end else begin : g_full
-      assign accepts = accepts_i;
       assign pending = pending_i;
+      assign accepts_n = accepts_n_i;
+      assign pending_n = pending_n_i;
       assign tgt     = tgt_i;
       assign abort   = abort_i;
       assign start_w = start_w_i;
@@ -132,26 +135,44 @@ module hexstep_engine #(
   endgenerate
 
   // ---------------------------------------------------------------------------------------
-  // Sample (edge ending cycle 4i - 1, a bus cycle): every axis's decision is computed from its
-  // own flip-flops in parallel; a registered one-hot pointer (the axis of the next sample) selects
-  // the one that is registered into stage 1 and updates that axis's state.
+  // Sample (edge ending cycle 4i - 1, a bus cycle): every axis's decision is computed in
+  // parallel; a registered one-hot pointer (the axis of the next sample) selects the one that is
+  // registered into stage 1 and updates that axis's state. The start decisions and the output
+  // stage's accept flag are registered at the edge before (g[1:0] == 2), from the values that
+  // their inputs have in the sample cycle: at that edge only the output stages' flags (their
+  // next values, *_n), the frame flags (a boundary) and an abort change them, and an abort
+  // clears what a start needs (the queue, the chain flag), so its decision is no start.
   reg  [NS-1:0]      smp_oh_q;                   // one-hot: the axis sampled at the next bus cycle
   reg  [2:0]         si_q;                       // its number
   wire [NS-1:0]      ax_mask = {NS{1'b1}} >> (NS - NAXES);   // the axes that exist
   wire               smp_slot = (kc == 2'd3) && ((smp_oh_q & ax_mask) != {NS{1'b0}});
   wire [2:0]         si = si_q;
-  wire [NS-1:0]      a_start_new, a_start_chain, a_start, a_gen;
+  wire [NS-1:0]      a_start_new, a_start, a_gen;
+  reg  [NS-1:0]      sn_q, sc_q, sa_q;              // start new, start chained, accepts
   genvar ga;
   generate
     for (ga = 0; ga < NS; ga = ga + 1) begin : g_dec
       wire [6:0] hf = sf_q[ga*21 + 7 +: 7];       // flags of the head of the queue
-      wire       busy = run_q[ga] | chain_q[ga] | starting_q[ga] | pending[ga];
-      wire       dir_ok = hf[F_BAD] | hf[F_EMPTY] | (hf[F_DIR] == tgt[ga]) | ~pending[ga];
-      assign a_start_new[ga] = fstart_q[ga] & ~fstop_q[ga] & ~running_q[ga] & ~busy &
-                               (qn_q[ga*2 +: 2] != 2'd0);
-      assign a_start_chain[ga] = chain_q[ga] & ~fstop_q[ga] & accepts[ga] & dir_ok;
-      assign a_start[ga] = a_start_new[ga] | a_start_chain[ga];
-      assign a_gen[ga] = a_start[ga] ? ~(hf[F_BAD] | hf[F_EMPTY]) : (run_q[ga] & accepts[ga]);
+      // Values in the sample cycle (see above).
+      wire       n_fstart = boundary ? spend_q[ga] : fstart_q[ga];
+      wire       n_fstop = boundary ? ppend_q[ga] : fstop_q[ga];
+      wire       n_busy = run_q[ga] | chain_q[ga] | starting_q[ga] | pending_n[ga];
+      wire       n_dir_ok = hf[F_BAD] | hf[F_EMPTY] | (hf[F_DIR] == tgt[ga]) | ~pending_n[ga];
+      always @(posedge clk_i) begin
+        if (rst_i) begin
+          sn_q[ga] <= 1'b0;
+          sc_q[ga] <= 1'b0;
+          sa_q[ga] <= 1'b0;
+        end else if (kc == 2'd2) begin
+          sn_q[ga] <= n_fstart & ~n_fstop & ~running_q[ga] & ~n_busy &
+                      (qn_q[ga*2 +: 2] != 2'd0) & ~abort[ga];
+          sc_q[ga] <= chain_q[ga] & ~n_fstop & accepts_n[ga] & n_dir_ok & ~abort[ga];
+          sa_q[ga] <= accepts_n[ga];
+        end
+      end
+      assign a_start_new[ga] = sn_q[ga];
+      assign a_start[ga] = sn_q[ga] | sc_q[ga];
+      assign a_gen[ga] = a_start[ga] ? ~(hf[F_BAD] | hf[F_EMPTY]) : (run_q[ga] & sa_q[ga]);
     end
   endgenerate
   wire [1:0]         s_act = act_q[si*2 +: 2];
@@ -177,6 +198,7 @@ module hexstep_engine #(
 
   // Pipeline stage 1 (loaded at the sample edge, end of 4i-1; read in cycles 4i..4i+3).
   reg        p1_valid, p1_start, p1_decf, p1_stop, p1_gen, p1_fstop, p1_abort;
+  reg        p1_smask_q, p1_cin_q;
   reg [2:0]  p1_ax;
   reg [1:0]  p1_slot, p1_ph, p1_frame;
   reg [6:0]  p1_fl;
@@ -244,9 +266,10 @@ module hexstep_engine #(
   reg             dz_q [0:1];              // divisor zero
 
   // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
+  // (The last two registered at the sample with stage 1, from the same values.)
   wire p1_pmask = p1_start;                                        // P starts at 0
-  wire p1_smask = (p1_ph == PH_DECEL) & p1_decf & ~p1_stop;         // t = 0 + V_DEC
-  wire p1_cin   = (p1_ph == PH_DECEL) & ~(p1_decf & ~p1_stop);      // S + ~dec + 1
+  wire p1_smask = p1_smask_q;   // (p1_ph == PH_DECEL) & p1_decf & ~p1_stop: t = 0 + V_DEC
+  wire p1_cin   = p1_cin_q;     // (p1_ph == PH_DECEL) & ~(p1_decf & ~p1_stop): S + ~dec + 1
 
   // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
   // rem <= s holds throughout (the overshoot is below the speed), so rem fits SUB_W bits.
@@ -262,12 +285,16 @@ module hexstep_engine #(
   // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
   // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
   // cycle 4i+7, when the fourth step of the slot's unit (p2's) is computed; the last step in
-  // 4i+8 only selects one.
+  // 4i+8 only selects one. With F = 32 * frame, F + 37 + 2 * ~h = 2 * ({frame, ~h} + 18) + 1
+  // (the frame and ~h do not overlap): each candidate is one 6-bit add of a constant.
   reg  [6:0]      due_a_q, due_b_q;
   wire            du = p2_ax[0];                            // the unit of stage 2's axis
   wire [3:0]      dh = {dq_q[du][2:0], du ? dv1[0] : dv0[0]};
   wire [6:0]      dbase = {p2_frame, 5'd0};
-  wire [6:0]      due_h = dbase + (DUE_OFFSET - 7'd31) + {2'b00, ~dh, 1'b0};   // q0 = 1
+  localparam [5:0] DUE_HALF = DUE_OFFSET[6:1] - 6'd16;      // 18 = (68 - 32) / 2
+  wire [5:0]      dhf = {p2_frame, ~dh};
+  wire [6:0]      due_h = {dhf + DUE_HALF, 1'b1};           // q0 = 1: F + 37 + 2 * ~h
+  wire [6:0]      due_h1 = {dhf + DUE_HALF + 6'd1, 1'b0};   // q0 = 0: one more
   // The last quotient bit (cycle 4i+8): the last step (dstep) of the slot's unit, on operands
   // selected before its compare.
   wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
@@ -378,7 +405,7 @@ module hexstep_engine #(
     endcase
     if (kc == 2'd3) begin
       due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
-      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h + 7'd1;
+      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h1;
     end
     // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
     // the axis's parity), a restoring step at every other edge.
@@ -557,6 +584,8 @@ module hexstep_engine #(
       p1_gen <= s_gen; p1_fstop <= fstop_q[si]; p1_abort <= 1'b0;
       p1_ax <= si; p1_slot <= s_slot; p1_ph <= s_ph; p1_frame <= g_q[6:5] + {1'b0, (si == 3'd0)};
       p1_fl <= s_fl;
+      p1_smask_q <= (s_ph == PH_DECEL) & s_decf & ~s_stop;
+      p1_cin_q <= (s_ph == PH_DECEL) & ~(s_decf & ~s_stop);
       p2_start <= p1_start; p2_decf <= p1_decf; p2_stop <= p1_stop;
       p2_gen <= p1_gen; p2_fstop <= p1_fstop; p2_abort <= p1_abort | abort[p1_ax];
       p2_ax <= p1_ax; p2_ph <= p1_ph; p2_frame <= p1_frame; p2_fl <= p1_fl;

@@ -51,11 +51,16 @@ module hexstep_pulse #(
   input  wire [PULSE_W-1:0] step_low_i,   // minimum STEP low time (0 acts as 1)
   input  wire [PULSE_W-1:0] dir_setup_i,  // DIR stable this long before a rising STEP edge
   input  wire [PULSE_W-1:0] dir_hold_i,   // DIR stable this long after a rising STEP edge
+  // Each of {dir_hold_i, dir_setup_i, step_low_i, step_high_i} at most 1 (an interval loaded
+  // with it is over at once), from where the values are written: one comparator for all axes.
+  input  wire [3:0]         over_i,
   input  wire               step_inv_i,   // STEP pin active low
   input  wire               dir_inv_i,    // DIR pin low for positive motion
   // To the engine.
   output wire               accepts_o,    // a request can be taken
   output wire               pending_o,    // requests or owed steps wait
+  output wire               accepts_n_o,  // accepts_o and pending_o after this edge
+  output wire               pending_n_o,
   output wire               tgt_o,        // DIR target
   // Pins and position.
   output wire               step_o,
@@ -80,11 +85,6 @@ module hexstep_pulse #(
   // Each counter's "interval over" (at most 1), kept in a register beside it so that the rise
   // condition is a few gates of registers.
   reg               cso_q, cso_d, cdo_q, cdo_d;
-
-  // A counter's interval is over at 1 or 0.
-  function over(input [PULSE_W-1:0] t);
-    over = (t >> 1) == {PULSE_W{1'b0}};
-  endfunction
 
   reg dir_change, rise, fall, due0, due1, due2;
 
@@ -156,12 +156,11 @@ module hexstep_pulse #(
     if (tgt_load_i) begin
       tgt_d = tgt_dir_i;
     end
-    // The same as over(cs_d), over(cd_d), without the counters' next values on the path: a
-    // reload is over if the loaded value is; a counting counter (at least 2, as its flag is 0)
-    // is over next if it is at 2 now.
-    cso_d = (rise || fall) ? (step_q ? over(step_low_i) : over(step_high_i)) :
-            (cso_q || cs_q == T_TWO);
-    cdo_d = rise ? over(dir_hold_i) : dir_change ? over(dir_setup_i) : (cdo_q || cd_q == T_TWO);
+    // The same as "cs_d, cd_d at most 1", without the counters' next values on the path: a
+    // reload is over if the loaded value is (over_i); a counting counter (at least 2, as its
+    // flag is 0) is over next if it is at 2 now.
+    cso_d = (rise || fall) ? (step_q ? over_i[1] : over_i[0]) : (cso_q || cs_q == T_TWO);
+    cdo_d = rise ? over_i[3] : dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO);
   end
 
   always @(posedge clk_i) begin
@@ -222,6 +221,8 @@ module hexstep_pulse #(
   end
   assign accepts_o = acc_q;
   assign pending_o = pend_q;
+  assign accepts_n_o = rst_i | (wait_d != 2'd3);
+  assign pending_n_o = ~rst_i & (wait_d != 2'd0);
   assign tgt_o = tgt_q;
   assign step_o = step_q ^ step_inv_i;
   assign dir_o = dir_q ^ dir_inv_i;

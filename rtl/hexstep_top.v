@@ -50,6 +50,10 @@ module hexstep_top #(
   wire [6:0]               g;
   wire [NAXES-1:0]         start_w, stop_w, abort, busy, run, done, refused, freed, flush;
   wire [NAXES-1:0]         accepts, pending, tgt, req, tgt_load, step_inv, dir_inv;
+  wire [NAXES-1:0]         accepts_n, pending_n;
+  // The engine registers its start decisions from the stages' next flags (accepts_n_o);
+  // accepts_o itself is what the formal contract checks a request against (formal/).
+  wire                     unused_accepts = ^accepts;
   wire [NAXES*2-1:0]       act, qn, phase;
   wire                     push, bus_re, bus_init, tgt_dir;
   wire [2:0]               push_axis;
@@ -59,6 +63,7 @@ module hexstep_top #(
   wire [31:0]              bus_rdata, bus_wdata;
   wire [3:0]               bus_we;
   wire [NAXES*PULSE_W-1:0] step_high, step_low, dir_setup, dir_hold;
+  wire [NAXES*4-1:0]       cfg_over;
   wire [NAXES*POS_W-1:0]   pos;
 
   hexstep_wb #(
@@ -77,7 +82,8 @@ module hexstep_top #(
     .act_i (act), .qn_i (qn), .busy_i (busy), .run_i (run), .phase_i (phase), .done_i (done),
     .refused_i (refused), .freed_i (freed), .flush_i (flush),
     .step_high_o (step_high), .step_low_o (step_low), .dir_setup_o (dir_setup),
-    .dir_hold_o (dir_hold), .step_inv_o (step_inv), .dir_inv_o (dir_inv), .pos_i (pos)
+    .dir_hold_o (dir_hold), .cfg_over_o (cfg_over), .step_inv_o (step_inv),
+    .dir_inv_o (dir_inv), .pos_i (pos)
   );
 
   hexstep_engine #(.NAXES (NAXES), .RAM_STYLE (RAM_STYLE)) u_engine (
@@ -89,7 +95,8 @@ module hexstep_top #(
     .bus_wdata_i (bus_wdata), .bus_init_i (bus_init),
     .act_o (act), .qn_o (qn), .busy_o (busy), .run_o (run), .phase_o (phase), .done_o (done),
     .refused_o (refused), .freed_o (freed), .flush_o (flush),
-    .accepts_i (accepts), .pending_i (pending), .tgt_i (tgt),
+    .pending_i (pending), .tgt_i (tgt),
+    .accepts_n_i (accepts_n), .pending_n_i (pending_n),
     .req_o (req), .req_due_o (req_due), .tgt_load_o (tgt_load), .tgt_dir_o (tgt_dir)
   );
 
@@ -102,8 +109,10 @@ module hexstep_top #(
         .tgt_load_i (tgt_load[k]), .tgt_dir_i (tgt_dir),
         .step_high_i (step_high[k*PULSE_W +: PULSE_W]), .step_low_i (step_low[k*PULSE_W +: PULSE_W]),
         .dir_setup_i (dir_setup[k*PULSE_W +: PULSE_W]), .dir_hold_i (dir_hold[k*PULSE_W +: PULSE_W]),
+        .over_i (cfg_over[k*4 +: 4]),
         .step_inv_i (step_inv[k]), .dir_inv_i (dir_inv[k]),
         .accepts_o (accepts[k]), .pending_o (pending[k]), .tgt_o (tgt[k]),
+        .accepts_n_o (accepts_n[k]), .pending_n_o (pending_n[k]),
         .step_o (step_o[k]), .dir_o (dir_o[k]), .pos_o (pos[k*POS_W +: POS_W])
       );
     end

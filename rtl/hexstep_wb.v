@@ -79,6 +79,7 @@ module hexstep_wb #(
   output wire [NAXES*PULSE_W-1:0] step_low_o,
   output wire [NAXES*PULSE_W-1:0] dir_setup_o,
   output wire [NAXES*PULSE_W-1:0] dir_hold_o,
+  output wire [NAXES*4-1:0]       cfg_over_o,   // per axis: each of the four above at most 1
   output wire [NAXES-1:0]         step_inv_o,
   output wire [NAXES-1:0]         dir_inv_o,
   input  wire [NAXES*POS_W-1:0]   pos_i
@@ -150,6 +151,7 @@ module hexstep_wb #(
   reg  [31:0]      irq_en_q, irq_en_d;
   reg  [31:0]      pend_q, pend_d;
   reg  [NAXES*NC*32-1:0] cfg_q, cfg_d;        // pulse timing and polarity (live)
+  reg  [NAXES*4-1:0]     cov_q;               // ... each timing word at most 1 (cfg_over_o)
   // Bus engine.
   reg  [2:0]       op_q, op_d;
   reg  [2:0]       oax_q, oax_d;              // axis of the operation
@@ -664,6 +666,17 @@ module hexstep_wb #(
     end
   end
 
+  // The flags of cfg_over_o, with the live timing words: one comparator on the merged word
+  // (masked to PULSE_W bits) for every axis and word; the reset words are 1, 1, 0, 0.
+  wire    cov_w = (odat_q[31:1] == 31'd0);
+  integer vk, vi;   // (loop variables of this block only)
+  always @(posedge clk_i) begin
+    for (vk = 0; vk < NAXES; vk = vk + 1)
+      for (vi = 0; vi < 4; vi = vi + 1)
+        if (rst_i) cov_q[vk*4+vi] <= 1'b1;
+        else if (pcfg_q[vk*NC+vi]) cov_q[vk*4+vi] <= cov_w;
+  end
+
   // Operation data and loader registers: not reset (read only within an operation, which
   // writes them before reading them).
   always @(posedge clk_i) begin
@@ -700,6 +713,7 @@ module hexstep_wb #(
       assign dir_hold_o[g*PULSE_W +: PULSE_W]  = cfg_q[(g*NC+3)*32 +: PULSE_W];
       assign step_inv_o[g]                     = cfg_q[(g*NC+4)*32];
       assign dir_inv_o[g]                      = cfg_q[(g*NC+4)*32 + 1];
+      assign cfg_over_o[g*4 +: 4]              = cov_q[g*4 +: 4];
     end
   endgenerate
 
