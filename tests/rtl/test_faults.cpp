@@ -603,3 +603,56 @@ TEST(Faults, BusWritesToEveryRegisterDuringMotion) {
   }
   EXPECT_EQ(b.problems(), "");
 }
+
+// A start in the frame in which the move before it lets go of the axis. A move starts at its
+// sample only if the axis is not busy, and a chained move whose direction differs only once no
+// step of the move before waits; with a long DIR setup the last thing that keeps the axis busy
+// is the owed step of a reversing one-step move, so its rise (the output stage's pending flag
+// falling) decides. The setup time is swept over 32 consecutive values, which moves that rise
+// over every cycle of the frame, among them the edge just before the axis's sample: the start
+// decision must take the flag after that edge, as the model does (the RTL registers the
+// decision one edge early, from the stage's next flags). Two ways a move follows: chained
+// behind the one-step move (queued with it), and started by START, written in every frame
+// after the one-step move ended, where a START whose sample finds the axis busy is dropped.
+TEST(Faults, StartSweptOverTheLastRiseOfTheMoveBefore) {
+  const unsigned k = 3;
+  for (bool chained : {true, false}) {
+    std::array<bool, kFrameCycles> rise_at{};  // frame cycles of the one-step move's rise
+    for (uint32_t setup = 800; setup < 800 + kFrameCycles; ++setup) {
+      const std::string name = std::string(chained ? "chained" : "START") + ", dir_setup " + std::to_string(setup);
+      SCOPED_TRACE(name);
+      Bench b(11);
+      b.set_pulse(k, PulseConfig{2, 2, setup, 0, false, false});
+      bool prev = false;
+      uint64_t first_rise = 0;
+      b.bus.on_edge = [&] {
+        const bool l = b.m().pulse(k).step_level();
+        if (l && !prev && first_rise == 0) first_rise = b.cycle();
+        prev = l;
+      };
+      const bool dir = !b.m().pulse(k).dir_level();  // reversing: the step waits for the setup
+      const AxisMove one = cruise(1, 1ull << 62, dir), next = cruise(3, 1ull << 62, !dir);
+      b.push(k, one);
+      if (chained) b.push(k, next);
+      b.write(R::START, 1u << k);
+      ASSERT_TRUE(b.run_until([&] { return b.m().running(k); }, 200)) << "the one-step move never started";
+      if (!chained) {
+        // The one-step move ends (its generator) with its step still waiting for the setup.
+        ASSERT_TRUE(b.run_until([&] { return b.m().gen(k).steps_done() == 1 && !b.m().running(k); }, 2000));
+        ASSERT_TRUE(b.m().pulse(k).pending()) << "the step rose before the move ended";
+        b.push(k, next);
+        ASSERT_TRUE(b.m().pulse(k).pending()) << "the step rose before the push";
+        for (unsigned i = 0; i < 400 && !b.m().running(k); ++i) b.write(R::START, 1u << k);
+        ASSERT_TRUE(b.m().running(k)) << "the second move never started";
+      }
+      ASSERT_TRUE(b.run_until([&] { return !b.m().busy(k) && !b.m().running(k); }, 20000));
+      ASSERT_NE(first_rise, 0u);
+      rise_at[first_rise % kFrameCycles] = true;
+      EXPECT_EQ(b.position(k), signed_steps(one) + signed_steps(next));
+      EXPECT_EQ(b.rises(k), one.steps + next.steps);
+      EXPECT_EQ(b.problems(), "");
+    }
+    // The sweep put the rise on every cycle of the frame.
+    for (unsigned c = 0; c < kFrameCycles; ++c) EXPECT_TRUE(rise_at[c]) << (chained ? "chained" : "START") << ": no rise at frame cycle " << c;
+  }
+}
