@@ -147,7 +147,7 @@ module hexstep_engine #(
   wire [NS-1:0]      ax_mask = {NS{1'b1}} >> (NS - NAXES);   // the axes that exist
   wire               smp_slot = (kc == 2'd3) && ((smp_oh_q & ax_mask) != {NS{1'b0}});
   wire [2:0]         si = si_q;
-  wire [NS-1:0]      a_start_new, a_start, a_gen;
+  wire [NS-1:0]      a_start, a_gen;
   reg  [NS-1:0]      sn_q, sc_q, sa_q;              // start new, start chained, accepts
   genvar ga;
   generate
@@ -170,7 +170,6 @@ module hexstep_engine #(
           sa_q[ga] <= accepts_n[ga];
         end
       end
-      assign a_start_new[ga] = sn_q[ga];
       assign a_start[ga] = sn_q[ga] | sc_q[ga];
       assign a_gen[ga] = a_start[ga] ? ~(hf[F_BAD] | hf[F_EMPTY]) : (run_q[ga] & sa_q[ga]);
     end
@@ -198,7 +197,7 @@ module hexstep_engine #(
 
   // Pipeline stage 1 (loaded at the sample edge, end of 4i-1; read in cycles 4i..4i+3).
   reg        p1_valid, p1_start, p1_decf, p1_stop, p1_gen, p1_fstop, p1_abort;
-  reg        p1_smask_q, p1_cin_q;
+  reg        p1_smask, p1_cin;                 // datapath masks (below)
   reg [2:0]  p1_ax;
   reg [1:0]  p1_slot, p1_ph, p1_frame;
   reg [6:0]  p1_fl;
@@ -266,10 +265,9 @@ module hexstep_engine #(
   reg             dz_q [0:1];              // divisor zero
 
   // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
-  // (The last two registered at the sample with stage 1, from the same values.)
+  // p1_smask (t = 0 + V_DEC) and p1_cin (S + ~dec + 1) are registered with stage 1 at the
+  // sample, from the phase, first-decelerating-tick and stopping flags that stage 1 takes.
   wire p1_pmask = p1_start;                                        // P starts at 0
-  wire p1_smask = p1_smask_q;   // (p1_ph == PH_DECEL) & p1_decf & ~p1_stop: t = 0 + V_DEC
-  wire p1_cin   = p1_cin_q;     // (p1_ph == PH_DECEL) & ~(p1_decf & ~p1_stop): S + ~dec + 1
 
   // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
   // rem <= s holds throughout (the overshoot is below the speed), so rem fits SUB_W bits.
@@ -486,7 +484,7 @@ module hexstep_engine #(
           end else if (a_start[k]) begin
             pop[k] = 1'b1;
             act_d[k*2 +: 2] = inc3(act_q[k*2 +: 2]);
-            if (a_start_new[k]) running_d[k] = 1'b1;
+            if (sn_q[k]) running_d[k] = 1'b1;   // a new move (not chained)
             chain_d[k] = 1'b0;
             starting_d[k] = 1'b1;
           end
@@ -584,8 +582,8 @@ module hexstep_engine #(
       p1_gen <= s_gen; p1_fstop <= fstop_q[si]; p1_abort <= 1'b0;
       p1_ax <= si; p1_slot <= s_slot; p1_ph <= s_ph; p1_frame <= g_q[6:5] + {1'b0, (si == 3'd0)};
       p1_fl <= s_fl;
-      p1_smask_q <= (s_ph == PH_DECEL) & s_decf & ~s_stop;
-      p1_cin_q <= (s_ph == PH_DECEL) & ~(s_decf & ~s_stop);
+      p1_smask <= (s_ph == PH_DECEL) & s_decf & ~s_stop;
+      p1_cin <= (s_ph == PH_DECEL) & ~(s_decf & ~s_stop);
       p2_start <= p1_start; p2_decf <= p1_decf; p2_stop <= p1_stop;
       p2_gen <= p1_gen; p2_fstop <= p1_fstop; p2_abort <= p1_abort | abort[p1_ax];
       p2_ax <= p1_ax; p2_ph <= p1_ph; p2_frame <= p1_frame; p2_fl <= p1_fl;

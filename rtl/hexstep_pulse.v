@@ -200,8 +200,9 @@ module hexstep_pulse #(
   end
 
   // A request fits: at most two steps (entries + owed) wait, so an entry is free. Both flags
-  // are registered copies computed from the next state (the engine's decision logic then starts
-  // from flip-flops); they describe the state now, like the unregistered expressions would.
+  // are registers of their next values, accepts_n_o and pending_n_o (the engine registers its
+  // start decision from those); they describe the state now, like the unregistered expressions
+  // would.
   // The number of waiting steps (entries and owed together, 0..3) is kept as a counter: a
   // request adds one, a rise takes one, an abort clears it (a request falling due only moves
   // from an entry to owed).
@@ -209,19 +210,13 @@ module hexstep_pulse #(
   wire [1:0] wait_d = abort_i ? 2'd0 : wait_q + {1'b0, req_i} - {1'b0, rise};
   reg        acc_q, pend_q;
   always @(posedge clk_i) begin
-    if (rst_i) begin
-      wait_q <= 2'd0;
-      acc_q <= 1'b1;
-      pend_q <= 1'b0;
-    end else begin
-      wait_q <= wait_d;
-      acc_q <= (wait_d != 2'd3);
-      pend_q <= (wait_d != 2'd0);
-    end
+    wait_q <= rst_i ? 2'd0 : wait_d;
+    acc_q <= accepts_n_o;
+    pend_q <= pending_n_o;
   end
   assign accepts_o = acc_q;
   assign pending_o = pend_q;
-  assign accepts_n_o = rst_i | (wait_d != 2'd3);
+  assign accepts_n_o = rst_i | (wait_d != 2'd3);    // reset: nothing waits
   assign pending_n_o = ~rst_i & (wait_d != 2'd0);
   assign tgt_o = tgt_q;
   assign step_o = step_q ^ step_inv_i;

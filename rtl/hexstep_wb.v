@@ -667,13 +667,13 @@ module hexstep_wb #(
   end
 
   // The flags of cfg_over_o, with the live timing words: one comparator on the merged word
-  // (masked to PULSE_W bits) for every axis and word; the reset words are 1, 1, 0, 0.
+  // (masked to PULSE_W bits) for every axis and word; at reset, those of CFG_RESET's words.
   wire    cov_w = (odat_q[31:1] == 31'd0);
   integer vk, vi;   // (loop variables of this block only)
   always @(posedge clk_i) begin
     for (vk = 0; vk < NAXES; vk = vk + 1)
       for (vi = 0; vi < 4; vi = vi + 1)
-        if (rst_i) cov_q[vk*4+vi] <= 1'b1;
+        if (rst_i) cov_q[vk*4+vi] <= (CFG_RESET[vi*32+1 +: 31] == 31'd0);
         else if (pcfg_q[vk*NC+vi]) cov_q[vk*4+vi] <= cov_w;
   end
 
