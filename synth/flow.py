@@ -29,6 +29,7 @@ import os
 import re
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -438,6 +439,8 @@ def build(name, out_root, results, strict, firmware=None):
         pnr += ["--textcfg", "design.config"]
         if board:
             pnr += ["--lpf", os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
+    # The arguments after the tool, as run in bdir: `seeds` repeats this run with other seeds.
+    res["nextpnr_args"] = pnr[1:]
     rc, secs, over = run_pnr(pnr, bdir, os.path.join(bdir, "nextpnr.log"))
     res["nextpnr_seconds"] = round(secs, 1)
     with open(os.path.join(bdir, "nextpnr.log")) as f:
@@ -468,11 +471,9 @@ def build(name, out_root, results, strict, firmware=None):
         res["utilization"] = util
         res["logic_cells"] = util.get(lc, {}).get("used")
         res["logic_cells_available"] = util.get(lc, {}).get("available")
-        fmax = rep.get("fmax", {})
-        res["fmax_by_clock"] = fmax
-        core = [c for c in fmax.values() if abs(c.get("constraint", 0) - clock) <= 0.01 * clock]
-        core = core or list(fmax.values())
-        res["fmax_mhz"] = round(min(c["achieved"] for c in core), 2) if core else None
+        res["fmax_by_clock"] = rep.get("fmax", {})
+        res["fmax_mhz"] = core_fmax(rep, clock)
+        res["critical_path"] = critical_path(pnr_log)
         res["timing_met"] = res["fmax_mhz"] is not None and res["fmax_mhz"] >= clock
         if board:  # pack the bitstream
             if fam == "ice40":
@@ -525,6 +526,94 @@ def config_label(t):
     data_mem = " SPRAM" if int(sp.get("DATA_SPRAM", 0)) else ""
     return (f"SoC: PicoRV32 RV32I{' (' + ', '.join(cpu) + ')' if cpu else ''} + {ram} KiB program "
             f"RAM + {data} KiB data RAM{data_mem} + UART; hexstep {core}")
+
+
+def core_fmax(rep, clock):
+    """nextpnr's Fmax (MHz) of the core clock in a report.json: the clock constrained to the
+    target's clock (the slowest, if several are), else the slowest clock."""
+    fmax = rep.get("fmax", {})
+    core = [c for c in fmax.values() if abs(c.get("constraint", 0) - clock) <= 0.01 * clock]
+    core = core or list(fmax.values())
+    return round(min(c["achieved"] for c in core), 2) if core else None
+
+
+def critical_path(log_text):
+    """Start and end cell of the last (post-route) critical path report of a nextpnr log."""
+    rep = log_text.rsplit("Critical path report for clock", 1)
+    if len(rep) < 2:
+        return None
+    cells = re.findall(r"(Source|Sink) (\S+)", rep[1].split("ns routing", 1)[0])
+    if not cells:
+        return None
+    return {"from": cells[0][1], "to": cells[-1][1]}
+
+
+def seeds(name, out_root, results, seed_list, jobs):
+    """Place and route a built target again with other seeds (the netlist and the nextpnr
+    arguments of `build`, only --seed differs) and add Fmax per seed to its result file.
+    nextpnr's Fmax moves by several percent with the seed alone; a change of the RTL is judged
+    by the spread, not by one seed."""
+    bdir = os.path.join(os.path.abspath(out_root), name)
+    rpath = os.path.join(results, f"{name}.json")
+    if not os.path.exists(rpath) or not os.path.exists(os.path.join(bdir, "netlist.json")):
+        die(f"{name}: no build in {bdir} with a result in {results}: run `flow.py build {name}` first")
+    with open(rpath) as f:
+        res = json.load(f)
+    t = load_targets()[name]
+    fw = fw_abs(res["soc"]["firmware"]) if res.get("soc") else None
+    if res.get("design_sha") != design_sha(t, fw):
+        die(f"{name}: {rpath} is of other sources than this tree: build it again first")
+    if not res.get("fits") or "nextpnr_args" not in res:
+        die(f"{name}: the build did not place and route (or predates `seeds`): build it again")
+    args = list(res["nextpnr_args"])
+    drop = {"--seed", "--report", "--asc", "--textcfg"}
+    base = []
+    it = iter(range(len(args)))
+    for i in it:
+        if args[i] in drop:
+            next(it, None)
+        else:
+            base.append(args[i])
+    fam = res["family"]
+
+    def one(seed):
+        sdir = os.path.join(bdir, f"seed{seed}")
+        shutil.rmtree(sdir, ignore_errors=True)
+        os.makedirs(sdir)
+        cmd = [tool("yowasp-nextpnr-" + fam)] + [os.path.join("..", a) if a == "netlist.json"
+                                                 or a.endswith((".pcf", ".lpf")) else a
+                                                 for a in base]
+        cmd += ["--seed", str(seed), "--report", "report.json"]
+        rc, _, _ = run_pnr(cmd, sdir, os.path.join(sdir, "nextpnr.log"))
+        if rc != 0 or not os.path.exists(os.path.join(sdir, "report.json")):
+            die(f"{name}: nextpnr seed {seed} failed (exit {rc}), see {sdir}/nextpnr.log")
+        with open(os.path.join(sdir, "report.json")) as f:
+            rep = json.load(f)
+        with open(os.path.join(sdir, "nextpnr.log")) as f:
+            cp = critical_path(f.read())
+        return seed, core_fmax(rep, res["clock_mhz"]), cp
+
+    from concurrent.futures import ThreadPoolExecutor
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as ex:
+        got = list(ex.map(one, seed_list))
+    per = {"1": res["fmax_mhz"]} if res.get("fmax_mhz") is not None else {}
+    paths = {"1": res.get("critical_path")}
+    for seed, fm, cp in got:
+        per[str(seed)] = fm
+        paths[str(seed)] = cp
+    res["fmax_seeds"] = dict(sorted(per.items(), key=lambda kv: int(kv[0])))
+    res["critical_path_seeds"] = dict(sorted(paths.items(), key=lambda kv: int(kv[0])))
+    with open(rpath + ".tmp", "w") as f:
+        json.dump(res, f, indent=2, sort_keys=True)
+        f.write("\n")
+    os.replace(rpath + ".tmp", rpath)
+    v = sorted(per.values())
+    print(f"synth: {name}: Fmax over seeds {', '.join(res['fmax_seeds'])}: min {v[0]}, median "
+          f"{statistics.median(v):.2f}, max {v[-1]} MHz (seed 1: {res['fmax_mhz']})")
+    for seed, cp in res["critical_path_seeds"].items():
+        if cp:
+            print(f"  seed {seed}: {per.get(seed)} MHz  {cp['from']} -> {cp['to']}")
+    return 0
 
 
 def goal_status(r):
@@ -739,8 +828,22 @@ def main():
     s = sub.add_parser("summary")
     s.add_argument("--results", default=os.path.join(ROOT, "synth", "results"))
     s.add_argument("--doc", default=None)
+    d = sub.add_parser("seeds", help="place and route a built target again with other seeds")
+    d.add_argument("target")
+    d.add_argument("--out", default=os.path.join(ROOT, "build", "synth-out"))
+    d.add_argument("--results", default=os.path.join(ROOT, "synth", "results"))
+    d.add_argument("--seeds", default="2,3,4,5", help="comma-separated seeds (seed 1 is the build's)")
+    d.add_argument("-j", "--jobs", type=int, default=2)
     sub.add_parser("list")
     a = ap.parse_args()
+    if a.cmd == "seeds":
+        try:
+            sl = [int(x) for x in a.seeds.split(",") if x.strip()]
+        except ValueError:
+            die(f"--seeds: comma-separated integers 2..{2**31 - 1}, got '{a.seeds}'")
+        if not sl or any(x < 2 or x >= 2**31 for x in sl):
+            die(f"--seeds: comma-separated integers 2..{2**31 - 1} (1 is the build's), got '{a.seeds}'")
+        return seeds(a.target, a.out, a.results, sl, a.jobs)
     if a.cmd == "build":
         return build(a.target, a.out, a.results, a.strict_warnings, a.firmware)
     if a.cmd == "summary":
