@@ -191,6 +191,7 @@ module hexstep_engine_fv #(
 
   // ---- the bus block's side ----
   wire [6:0]  g;
+  wire [3:0]  kph;
   wire        bus_cyc = (g[1:0] == 2'd3);
   wire [7:0]  n_bus = t[9:2];    // bus cycle number at g = 4n + 3
   reg  [3:0]  bwe;
@@ -309,7 +310,7 @@ module hexstep_engine_fv #(
   wire [POS_W-1:0] pos;
 
   hexstep_engine #(.NAXES (1)) u_eng (
-    .clk_i (clk_i), .rst_i (rst_i), .g_o (g),
+    .clk_i (clk_i), .rst_i (rst_i), .g_o (g), .kph_o (kph),
     .start_w_i (start_w), .stop_w_i (stop_i), .abort_i (abort_i),
     .push_i (push), .push_axis_i (3'd0), .push_flags_i (push_flags),
     .bus_re_i (1'b0), .bus_rbank_i (2'd0), .bus_raddr_i (8'd0), .bus_rdata_o (bus_rdata),
@@ -408,6 +409,8 @@ module hexstep_engine_fv #(
   wire [3:0] hi_t = (f_high == 0) ? 4'd1 : {2'd0, f_high};
 
   always @* if (!rst_i && p_have) begin
+    // The one-hot slot cycle is the counter's low two bits.
+    assert (kph == 4'b0001 << g[1:0]);
     // No STEP while idle: a rising edge only while the engine was busy, and none before the
     // first tick's step can be due (sampled at g = 63, due at the earliest on 64 + 68 - 31).
     if (f_rise) assert (p_busy && t > 10'd100);

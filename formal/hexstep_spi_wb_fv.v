@@ -54,7 +54,7 @@ module hexstep_spi_wb_fv #(
     .wb_cyc_i (cyc), .wb_stb_i (stb), .wb_we_i (we), .wb_adr_i (adr), .wb_dat_i (wdat),
     .wb_sel_i (sel), .wb_dat_o (rdat), .wb_ack_o (ack),
     .estop_i (estop_i), .irq_o (),
-    .kc_i (g[1:0]), .start_w_o (), .stop_w_o (), .abort_o (),
+    .kph_i (4'b0001 << g[1:0]), .start_w_o (), .stop_w_o (), .abort_o (),
     .push_o (), .push_axis_o (), .push_flags_o (),
     .bus_re_o (), .bus_rbank_o (), .bus_raddr_o (), .bus_rdata_i (bus_rdata_i),
     .bus_we_o (), .bus_waddr_o (), .bus_wdata_o (), .bus_init_o (),

@@ -7,7 +7,7 @@
 // them and we/adr/dat/sel until the cycle in which it sees ack: assumed), the e-stop pin, and
 // the engine's outputs (act, qn, busy, run, phase, done, refused, freed, flush, positions),
 // except that act and qn stay in 0..2 (the engine's queue ring; asserted in hexstep_engine_fv).
-// The cycle counter (kc_i = g[1:0]) counts from any value.
+// The cycle counter (g; kph_i is g[1:0] one-hot) counts from any value.
 //
 // The memory behind the bus port is modelled for one watched word (any staging or pulse
 // configuration word of any axis, $anyconst): the harness keeps that word, writes it when the
@@ -101,7 +101,7 @@ module hexstep_wb_fv #(
     .wb_cyc_i (wb_cyc_i), .wb_stb_i (wb_stb_i), .wb_we_i (wb_we_i), .wb_adr_i (wb_adr_i),
     .wb_dat_i (wb_dat_i), .wb_sel_i (wb_sel_i), .wb_dat_o (dat_o), .wb_ack_o (ack),
     .estop_i (estop_i), .irq_o (irq),
-    .kc_i (kc), .start_w_o (start_w), .stop_w_o (stop_w), .abort_o (abort),
+    .kph_i (4'b0001 << kc), .start_w_o (start_w), .stop_w_o (stop_w), .abort_o (abort),
     .push_o (push), .push_axis_o (push_axis), .push_flags_o (push_flags),
     .bus_re_o (bus_re), .bus_rbank_o (bus_rbank), .bus_raddr_o (bus_raddr),
     .bus_rdata_i (bus_rdata), .bus_we_o (bus_we), .bus_waddr_o (bus_waddr),

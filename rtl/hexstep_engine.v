@@ -45,6 +45,7 @@ module hexstep_engine #(
   input  wire               clk_i,
   input  wire               rst_i,          // synchronous, active high
   output wire [6:0]         g_o,            // cycle counter modulo 128
+  output wire [3:0]         kph_o,          // its low two bits one-hot: kph_o[n] == (g_o[1:0] == n)
   // Control from the bus block; each acts at the edge that ends the cycle it is high in.
   input  wire [NAXES-1:0]   start_w_i,      // START written: start at the next frame boundary
   input  wire [NAXES-1:0]   stop_w_i,       // STOP written: stop at the next frame boundary
@@ -97,6 +98,9 @@ module hexstep_engine #(
   reg  [6:0] g_q;
   wire [4:0] f = g_q[4:0];
   wire [1:0] kc = g_q[1:0];
+  // kc one-hot, a register of its own (kph_q[n] == (kc == n)): the slot cycle's strobes and
+  // enables (and the bus block's) come from a flip-flop rather than a decode of the counter.
+  reg  [3:0] kph_q;
   wire       boundary = (f == 5'd30);
 
   // ---------------------------------------------------------------------------------------
@@ -145,7 +149,7 @@ module hexstep_engine #(
   reg  [NS-1:0]      smp_oh_q;                   // one-hot: the axis sampled at the next bus cycle
   reg  [2:0]         si_q;                       // its number
   wire [NS-1:0]      ax_mask = {NS{1'b1}} >> (NS - NAXES);   // the axes that exist
-  wire               smp_slot = (kc == 2'd3) && ((smp_oh_q & ax_mask) != {NS{1'b0}});
+  wire               smp_slot = kph_q[3] && ((smp_oh_q & ax_mask) != {NS{1'b0}});
   wire [2:0]         si = si_q;
   wire [NS-1:0]      a_start, a_gen;
   reg  [NS-1:0]      sn_q, sc_q, sa_q;              // start new, start chained, accepts
@@ -163,7 +167,7 @@ module hexstep_engine #(
           sn_q[ga] <= 1'b0;
           sc_q[ga] <= 1'b0;
           sa_q[ga] <= 1'b0;
-        end else if (kc == 2'd2) begin
+        end else if (kph_q[2]) begin
           sn_q[ga] <= n_fstart & ~n_fstop & ~running_q[ga] & ~n_busy &
                       (qn_q[ga*2 +: 2] != 2'd0) & ~abort[ga];
           sc_q[ga] <= chain_q[ga] & ~n_fstop & accepts_n[ga] & n_dir_ok & ~abort[ga];
@@ -220,7 +224,7 @@ module hexstep_engine #(
   reg  [31:0] wd0, wd1, wd2;
   reg         we0, we1, we2, re_e;
   wire [31:0] rd0, rd1, rd2, rd3;
-  wire        bus_cyc = (kc == 2'd3);
+  wire        bus_cyc = kph_q[3];
   wire [31:0] bwd012 = bus_init_i ? 32'd0 : bus_wdata_i;
 
   hexstep_ram #(.STYLE (RAM_STYLE)) u_bank0 (
@@ -401,13 +405,13 @@ module hexstep_engine #(
         sell_q <= c_sell;
       end
     endcase
-    if (kc == 2'd3) begin
+    if (kph_q[3]) begin
       due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
       due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h1;
     end
     // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
     // the axis's parity), a restoring step at every other edge.
-    if (kc == 2'd3) begin
+    if (kph_q[3]) begin
       dr_q[p1_ax[0]] <= phi_sum[31 -: SUB_W];
       ds_q[p1_ax[0]] <= rd0[31 -: SUB_W];
       dz_q[p1_ax[0]] <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
@@ -445,7 +449,7 @@ module hexstep_engine #(
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
     // an abort since the sample cancels it.
-    cm = p3_valid && (kc == 2'd0);
+    cm = p3_valid && kph_q[0];
     cj = p3_ax;
     cm_ok = cm && !p3_abort && !abort[cj];
     if (cm) starting_d[cj] = 1'b0;
@@ -475,7 +479,7 @@ module hexstep_engine #(
 
     // Sample (edge ending 4i-1), per axis with the one-hot pointer.
     for (k = 0; k < NAXES; k = k + 1) begin
-      if (smp_oh_q[k] && kc == 2'd3) begin
+      if (smp_oh_q[k] && kph_q[3]) begin
         if (!abort[k]) begin
           if (fstop_q[k]) begin
             flush[k] = 1'b1;
@@ -545,6 +549,7 @@ module hexstep_engine #(
   always @(posedge clk_i) begin
     if (rst_i) begin
       g_q <= 7'd0;
+      kph_q <= 4'b0001;
       run_q <= {NS{1'b0}}; decf_q <= {NS{1'b0}}; stop_q <= {NS{1'b0}};
       chain_q <= {NS{1'b0}}; running_q <= {NS{1'b0}}; starting_q <= {NS{1'b0}};
       busy_q <= {NS{1'b0}};
@@ -556,9 +561,10 @@ module hexstep_engine #(
       si_q <= 3'd0; smp_oh_q <= {NS{1'b0}};
     end else begin
       g_q <= g_q + 7'd1;
+      kph_q <= {kph_q[2:0], kph_q[3]};
       // The next sample's axis: axis 0 after frame cycle 30, then one slot further at each bus
       // cycle (none for slots NAXES..7).
-      if (kc == 2'd3 || g_q[4:0] == 5'd30) begin
+      if (kph_q[3] || g_q[4:0] == 5'd30) begin
         si_q <= (g_q[4:0] == 5'd30) ? 3'd0 : si_q + 3'd1;
         smp_oh_q <= (g_q[4:0] == 5'd30) ? {{(NS-1){1'b0}}, 1'b1} : {smp_oh_q[NS-2:0], 1'b0};
       end
@@ -568,15 +574,15 @@ module hexstep_engine #(
       spend_q <= spend_d; ppend_q <= ppend_d; fstart_q <= fstart_d; fstop_q <= fstop_d;
       ph_q <= ph_d; act_q <= act_d; qn_q <= qn_d; sf_q <= sf_d;
       // Pipeline valid bits.
-      if (kc == 2'd3) p1_valid <= s_valid;
-      if (kc == 2'd3) p2_valid <= p1_valid;
-      if (kc == 2'd3) p3_valid <= p2_valid;
+      if (kph_q[3]) p1_valid <= s_valid;
+      if (kph_q[3]) p2_valid <= p1_valid;
+      if (kph_q[3]) p3_valid <= p2_valid;
     end
   end
 
   // Pipeline payload (not reset: read only while valid).
   always @(posedge clk_i) begin
-    if (kc == 2'd3) begin
+    if (kph_q[3]) begin
       // Stage 1 from the sample; stage 2 from stage 1.
       p1_start <= s_start; p1_decf <= s_decf; p1_stop <= s_stop;
       p1_gen <= s_gen; p1_fstop <= fstop_q[si]; p1_abort <= 1'b0;
@@ -599,7 +605,7 @@ module hexstep_engine #(
       p1_abort <= p1_abort | abort[p1_ax];
       p2_abort <= p2_abort | abort[p2_ax];
     end
-    if (kc == 2'd1) begin
+    if (kph_q[1]) begin
       // Commit decisions, from the datapath registers of cycle 4i+4.
       d_consume <= p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);
       d_bad <= p2_fl[F_BAD];
@@ -626,11 +632,12 @@ module hexstep_engine #(
       assign busy_o[gk] = busy8[gk];
       assign run_o[gk] = running_q[gk] | spend_q[gk] | fstart_q[gk];
       assign phase_o[gk*2 +: 2] = run_q[gk] ? ph_q[gk*2 +: 2] : PH_IDLE;
-      assign req_o[gk] = p3_valid && req_pre_q[gk] && (kc == 2'd0) && !abort[gk];
+      assign req_o[gk] = p3_valid && req_pre_q[gk] && kph_q[0] && !abort[gk];
       assign tgt_load_o[gk] = cm_ok && p3_start && !d_consume && ({29'd0, cj} == gk);
     end
   endgenerate
   assign g_o = g_q;
+  assign kph_o = kph_q;
   assign act_o = act_q[NAXES*2-1:0];
   assign qn_o = qn_q[NAXES*2-1:0];
   wire [NS-1:0] done8 = (busy_q & ~busy8) | consumed;

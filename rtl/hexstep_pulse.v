@@ -85,6 +85,10 @@ module hexstep_pulse #(
   // Each counter's "interval over" (at most 1), kept in a register beside it so that the rise
   // condition is a few gates of registers.
   reg               cso_q, cso_d, cdo_q, cdo_d;
+  // A rise may happen now if a step is owed: STEP low, low time over, DIR at the target, setup
+  // over. Registered from the next state, so that a rise (which loads both counters, the mode
+  // and the position) is one gate of registers.
+  reg               rdy_q, rdy_d;
 
   reg dir_change, rise, fall, due0, due1, due2;
 
@@ -96,7 +100,7 @@ module hexstep_pulse #(
     // hold over: in hold mode the counter, in setup mode always (hold ended before setup began);
     // setup over: in setup mode the counter, in hold mode always (likewise).
     dir_change = (dir_q != tgt_q) && (cdo_q || !md_q);
-    rise = !abort_i && (owed_q != 2'd0) && !step_q && cso_q && (dir_q == tgt_q) && (cdo_q || md_q);
+    rise = !abort_i && (owed_q != 2'd0) && rdy_q;
     fall = step_q && cso_q;
 
     // Next state, defaults first.
@@ -161,6 +165,7 @@ module hexstep_pulse #(
     // flag is 0) is over next if it is at 2 now.
     cso_d = (rise || fall) ? (step_q ? over_i[1] : over_i[0]) : (cso_q || cs_q == T_TWO);
     cdo_d = rise ? over_i[3] : dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO);
+    rdy_d = !step_d && cso_d && (dir_d == tgt_d) && (cdo_d || md_d);
   end
 
   always @(posedge clk_i) begin
@@ -177,8 +182,9 @@ module hexstep_pulse #(
       md_q <= 1'b1;
       pos_q <= {POS_W{1'b0}};
       cso_q <= 1'b1; cdo_q <= 1'b1;
+      rdy_q <= 1'b1;   // STEP low, both intervals over, DIR at the target
     end else begin
-      cso_q <= cso_d; cdo_q <= cdo_d; md_q <= md_d;
+      cso_q <= cso_d; cdo_q <= cdo_d; md_q <= md_d; rdy_q <= rdy_d;
       v0_q <= v0_d;
       v1_q <= v1_d;
       v2_q <= v2_d;

@@ -48,6 +48,7 @@ module hexstep_top #(
   // halves; INFO0 reports it.
 
   wire [6:0]               g;
+  wire [3:0]               kph;
   wire [NAXES-1:0]         start_w, stop_w, abort, busy, run, done, refused, freed, flush;
   wire [NAXES-1:0]         accepts, pending, tgt, req, tgt_load, step_inv, dir_inv;
   wire [NAXES-1:0]         accepts_n, pending_n;
@@ -74,7 +75,7 @@ module hexstep_top #(
     .wb_cyc_i (wb_cyc_i), .wb_stb_i (wb_stb_i), .wb_we_i (wb_we_i), .wb_adr_i (wb_adr_i),
     .wb_dat_i (wb_dat_i), .wb_sel_i (wb_sel_i), .wb_dat_o (wb_dat_o), .wb_ack_o (wb_ack_o),
     .estop_i (estop_i), .irq_o (irq_o),
-    .kc_i (g[1:0]), .start_w_o (start_w), .stop_w_o (stop_w), .abort_o (abort),
+    .kph_i (kph), .start_w_o (start_w), .stop_w_o (stop_w), .abort_o (abort),
     .push_o (push), .push_axis_o (push_axis), .push_flags_o (push_flags),
     .bus_re_o (bus_re), .bus_rbank_o (bus_rbank), .bus_raddr_o (bus_raddr),
     .bus_rdata_i (bus_rdata), .bus_we_o (bus_we), .bus_waddr_o (bus_waddr),
@@ -87,7 +88,7 @@ module hexstep_top #(
   );
 
   hexstep_engine #(.NAXES (NAXES), .RAM_STYLE (RAM_STYLE)) u_engine (
-    .clk_i (clk_i), .rst_i (rst_i), .g_o (g),
+    .clk_i (clk_i), .rst_i (rst_i), .g_o (g), .kph_o (kph),
     .start_w_i (start_w), .stop_w_i (stop_w), .abort_i (abort),
     .push_i (push), .push_axis_i (push_axis), .push_flags_i (push_flags),
     .bus_re_i (bus_re), .bus_rbank_i (bus_rbank), .bus_raddr_i (bus_raddr),

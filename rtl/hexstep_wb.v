@@ -50,7 +50,7 @@ module hexstep_wb #(
   input  wire                     estop_i,
   output wire                     irq_o,
   // Engine
-  input  wire [1:0]               kc_i,         // cycle of the frame's slot (g[1:0])
+  input  wire [3:0]               kph_i,        // cycle of the frame's slot (g[1:0]), one-hot
   output wire [NAXES-1:0]         start_w_o,
   output wire [NAXES-1:0]         stop_w_o,
   output wire [NAXES-1:0]         abort_o,
@@ -196,11 +196,12 @@ module hexstep_wb #(
   wire        w_cfg = CFG_WORDS[widx];
   wire [2:0]  ak    = blk[2:0] - 3'd2;     // the axis (block number - 2, modulo 8)
   wire        unused_adr = &{1'b0, wb_adr_i[1:0]};
-  wire        bus_cyc = (kc_i == 2'd3);
+  wire        bus_cyc = kph_i[3];
+  wire        unused_kph = kph_i[0];           // (the commit cycle: the engine's)
   reg         arm_q;                             // an operation was there in the last cycle
   wire        bus_go = bus_cyc & arm_q;          // ... so the port registers hold its access
-  wire        data_cyc = (kc_i == 2'd1);         // read data of the last bus cycle
-  wire        proc_cyc = (kc_i == 2'd2);         // the loader checks that data (registered)
+  wire        data_cyc = kph_i[1];               // read data of the last bus cycle
+  wire        proc_cyc = kph_i[2];               // the loader checks that data (registered)
 
   wire [31:0] irq_mask = {8'd0, {(8-NAXES){1'b0}}, ALL, {(8-NAXES){1'b0}}, ALL,
                           {(8-NAXES){1'b0}}, ALL};
@@ -374,6 +375,14 @@ module hexstep_wb #(
     l_flags[F_DZ]        = l_dec_z;
   end
 
+  // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
+  // slot stores it: DEC_FRAC left-aligned, DEC and FLOOR inverted). It is the write data of
+  // the next bus cycle and odat's next value, a function of rdq and ocnt alone, so that the
+  // operations' other data (the bus, the merge of a staging write) is not on its path.
+  wire [5:0]  lstep = ocnt_q - 6'd1;
+  wire [31:0] lw = (lstep == 6'd4 && DFRAC_W < 32) ? (rdq_q << (32 - DFRAC_W)) :
+                   (lstep == 6'd18 || lstep == 6'd20) ? ~rdq_q : rdq_q;
+
   integer k, i;
   reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
@@ -382,7 +391,6 @@ module hexstep_wb #(
   reg [4:0]  psrc;
   reg        cmp;                             // borrow of held - data (- borrow): data > held
   reg [31:0] cmp_unused;
-  reg [31:0] ldw;
 
   always @(*) begin
     cfg_d = cfg_q;  errf_d = errf_q;  poshi_d = poshi_q;
@@ -394,7 +402,7 @@ module hexstep_wb #(
     ack_d = 1'b0;
     dat_d = 32'h0;
     overrun = 1'b0;
-    cmp = 1'b0; cmp_unused = 32'd0; ldw = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
+    cmp = 1'b0; cmp_unused = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
 
     // The operation registers take the bus's address, data and byte enables on every idle
     // cycle (they are read only within an operation, which a request starts from idle), so
@@ -487,9 +495,8 @@ module hexstep_wb #(
           ocnt_d = ocnt_q + 6'd1;
         end
         if (proc_cyc && ocnt_q != 6'd0) begin
-          // The data of step ocnt - 1 (read three cycles ago, registered): checks, then the
-          // word to write at the next bus cycle.
-          ldw = rdq_q;
+          // The data of step ocnt - 1 (read three cycles ago, registered): its checks (the
+          // word it writes at the next bus cycle is lw).
           // held - data - borrow, one carry chain; cmp is the borrow out. lb is the borrow of
           // a low word's compare (steps 6, 10, 14, 18) until the high word's (8, 12, 16, 20)
           // has used it, and 0 at every other compare (cleared at step 0 and by each use), so
@@ -498,38 +505,35 @@ module hexstep_wb #(
           cmp = ~cmp;
           if (ocnt_q == 6'd1 || ld_hi_cmp(ocnt_q - 6'd1)) lb_d = 1'b0;
           case (ocnt_q - 6'd1)
-            6'd0: begin ljog_d = ldw[1]; ldir_d = ldw[0]; end
-            6'd1: begin lh_d = ldw; lz_d[0] = (ldw == 32'd0); end
-            6'd2: begin lg_d[0] = cmp; lz_d[1] = (ldw == 32'd0); end
-            6'd3: begin lg_d[1] = cmp; lz_d[2] = (ldw == 32'd0); end
-            6'd4: begin
-              lz_d[3] = (ldw == 32'd0);
-              ldw = (DFRAC_W >= 32) ? rdq_q : (rdq_q << (32 - DFRAC_W));
-            end
-            6'd5: begin lh_d = ldw; lz_d[4] = (ldw == 32'd0); end
-            6'd6: begin lb_d = cmp; lz_d[6] = (ldw == 32'd0); end
-            6'd7: begin lh_d = ldw; lz_d[5] = (ldw == 32'd0); end
+            6'd0: begin ljog_d = rdq_q[1]; ldir_d = rdq_q[0]; end
+            6'd1: begin lh_d = rdq_q; lz_d[0] = (rdq_q == 32'd0); end
+            6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq_q == 32'd0); end
+            6'd3: begin lg_d[1] = cmp; lz_d[2] = (rdq_q == 32'd0); end
+            6'd4: lz_d[3] = (rdq_q == 32'd0);
+            6'd5: begin lh_d = rdq_q; lz_d[4] = (rdq_q == 32'd0); end
+            6'd6: begin lb_d = cmp; lz_d[6] = (rdq_q == 32'd0); end
+            6'd7: begin lh_d = rdq_q; lz_d[5] = (rdq_q == 32'd0); end
             6'd8: begin
-              lg_d[2] = cmp; lz_d[7] = (ldw == 32'd0);
+              lg_d[2] = cmp; lz_d[7] = (rdq_q == 32'd0);
             end
-            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = ldw;
-            6'd10: begin lb_d = cmp; lz_d[8] = (ldw == 32'd0); end
+            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = rdq_q;
+            6'd10: begin lb_d = cmp; lz_d[8] = (rdq_q == 32'd0); end
             6'd12: begin
-              lg_d[3] = cmp; lz_d[9] = (ldw == 32'd0);
+              lg_d[3] = cmp; lz_d[9] = (rdq_q == 32'd0);
             end
             6'd14: lb_d = cmp;
             6'd16: begin
               lg_d[4] = cmp;
             end
-            6'd18: begin lb_d = cmp; lz_d[10] = (ldw == 32'd0); ldw = ~rdq_q; end
+            6'd18: begin lb_d = cmp; lz_d[10] = (rdq_q == 32'd0); end
             6'd20: begin
-              lg_d[5] = cmp; lz_d[11] = (ldw == 32'd0); ldw = ~rdq_q;
+              lg_d[5] = cmp; lz_d[11] = (rdq_q == 32'd0);
             end
-            6'd21: lz_d[12] = (ldw == 32'd0);
-            6'd22: lz_d[13] = (ldw == 32'd0);
+            6'd21: lz_d[12] = (rdq_q == 32'd0);
+            6'd22: lz_d[13] = (rdq_q == 32'd0);
             default: ;
           endcase
-          odat_d = ldw;
+          odat_d = lw;
         end
       end
       default: ;
@@ -598,7 +602,7 @@ module hexstep_wb #(
           if (pdst[5]) begin
             m_we[pdst[4:3]] = 1'b1;
             m_waddr = {oax_q, slot_word(otail_q, pdst[2:0])};
-            m_wdata = odat_d;
+            m_wdata = lw;
           end
         end
       end
