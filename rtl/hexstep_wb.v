@@ -379,7 +379,7 @@ module hexstep_wb #(
   // slot stores it: DEC_FRAC left-aligned, DEC and FLOOR inverted). It is the write data of
   // the next bus cycle and odat's next value, a function of rdq and ocnt alone, so that the
   // operations' other data (the bus, the merge of a staging write) is not on its path.
-  wire [5:0]  lstep = ocnt_q - 6'd1;
+  wire [5:0]  lstep = ocnt_q - 6'd1;         // the loader step whose data is in rdq
   wire [31:0] lw = (lstep == 6'd4 && DFRAC_W < 32) ? (rdq_q << (32 - DFRAC_W)) :
                    (lstep == 6'd18 || lstep == 6'd20) ? ~rdq_q : rdq_q;
 
@@ -503,8 +503,8 @@ module hexstep_wb #(
           // no decode sits in front of the chain.
           {cmp, cmp_unused} = add_ci(lh_q, ~rdq_q, ~lb_q);
           cmp = ~cmp;
-          if (ocnt_q == 6'd1 || ld_hi_cmp(ocnt_q - 6'd1)) lb_d = 1'b0;
-          case (ocnt_q - 6'd1)
+          if (ocnt_q == 6'd1 || ld_hi_cmp(lstep)) lb_d = 1'b0;
+          case (lstep)
             6'd0: begin ljog_d = rdq_q[1]; ldir_d = rdq_q[0]; end
             6'd1: begin lh_d = rdq_q; lz_d[0] = (rdq_q == 32'd0); end
             6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq_q == 32'd0); end
@@ -598,7 +598,7 @@ module hexstep_wb #(
           m_waddr = {oax_q, slot_word(otail_q, 3'd7)};
           m_wdata = 32'd0;
         end else begin
-          pdst = ld_dst(ocnt_q - 6'd1);
+          pdst = ld_dst(lstep);
           if (pdst[5]) begin
             m_we[pdst[4:3]] = 1'b1;
             m_waddr = {oax_q, slot_word(otail_q, pdst[2:0])};

@@ -33,6 +33,7 @@ import statistics
 import subprocess
 import sys
 import time
+from concurrent.futures import ThreadPoolExecutor
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 VENV_BIN = os.path.join(ROOT, ".venv", "bin")
@@ -48,6 +49,8 @@ PARAM_NAMES = ("NAXES", "ACC_W", "STEP_W", "DFRAC_W", "PULSE_W", "POS_W", "ADDR_
 # register (its block RAM clock-to-output is about 5.6 ns without it). Set by the flow, never
 # by targets.json, so no target can pair a family with the other family's memory.
 RAM_STYLE = {"ice40": "DELAY", "ecp5": "ECP5"}
+# nextpnr seed of `build` (the table's); `seeds` adds runs with others.
+PNR_SEED = 1
 SOC_RTL = ["soc/hexstep_soc.v", "soc/hexstep_soc_ram.v", "soc/hexstep_soc_uart.v",
            "rtl/boards/hexstep_board_reset.v", "soc/boards/hexstep_soc_board.v"]
 SOC_PARAM_NAMES = ("RAM_WORDS", "DATA_WORDS", "DATA_SPRAM", "CPU_BARREL_SHIFTER", "CPU_TWO_STAGE_SHIFT", "CPU_CATCH_MISALIGN",
@@ -424,23 +427,19 @@ def build(name, out_root, results, strict, firmware=None):
 
     dev_args = ([f"--{t['device']}", "--package", t["package"]] if fam == "ice40" else
                 [f"--{t['device']}", "--package", t["package"], "--speed", str(t["speed"])])
-    pnr = [tool("yowasp-nextpnr-" + fam), *dev_args, "--json", "netlist.json",
-           "--freq", f"{clock:g}", "--timing-allow-fail", "--report", "report.json", "--seed", "1"]
+    # The run's inputs and options (paths relative to bdir); `seeds` repeats it with other seeds.
+    args = [*dev_args, "--json", "netlist.json", "--freq", f"{clock:g}", "--timing-allow-fail"]
     if t.get("router"):  # nextpnr's default is router1; router2 routes large ECP5 designs faster
         if t["router"] not in ("router1", "router2"):
             die(f"{TARGETS}: target {name}: router must be router1 or router2")
-        pnr += ["--router", t["router"]]
+        args += ["--router", t["router"]]
         res["router"] = t["router"]
-    if fam == "ice40":
-        pnr += ["--asc", "design.asc"]
-        if board:
-            pnr += ["--pcf", os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
-    else:
-        pnr += ["--textcfg", "design.config"]
-        if board:
-            pnr += ["--lpf", os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
-    # The arguments after the tool, as run in bdir: `seeds` repeats this run with other seeds.
-    res["nextpnr_args"] = pnr[1:]
+    if board:
+        args += ["--pcf" if fam == "ice40" else "--lpf",
+                 os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
+    res["nextpnr_args"] = args
+    pnr = [tool("yowasp-nextpnr-" + fam), *args, "--report", "report.json", "--seed", str(PNR_SEED),
+           *(["--asc", "design.asc"] if fam == "ice40" else ["--textcfg", "design.config"])]
     rc, secs, over = run_pnr(pnr, bdir, os.path.join(bdir, "nextpnr.log"))
     res["nextpnr_seconds"] = round(secs, 1)
     with open(os.path.join(bdir, "nextpnr.log")) as f:
@@ -487,11 +486,7 @@ def build(name, out_root, results, strict, firmware=None):
             res["bitstream_bytes"] = os.path.getsize(os.path.join(bdir, img))
 
     res["goal_status"] = goal_status(res)
-    out = os.path.join(results, f"{name}.json")
-    with open(out + ".tmp", "w") as f:
-        json.dump(res, f, indent=2, sort_keys=True)
-        f.write("\n")
-    os.replace(out + ".tmp", out)
+    write_result(os.path.join(results, f"{name}.json"), res)
     print(f"synth: {name}: " + one_line(res))
 
     failed = []
@@ -526,6 +521,14 @@ def config_label(t):
     data_mem = " SPRAM" if int(sp.get("DATA_SPRAM", 0)) else ""
     return (f"SoC: PicoRV32 RV32I{' (' + ', '.join(cpu) + ')' if cpu else ''} + {ram} KiB program "
             f"RAM + {data} KiB data RAM{data_mem} + UART; hexstep {core}")
+
+
+def write_result(path, res):
+    """A target's result file, replaced whole (never left half written)."""
+    with open(path + ".tmp", "w") as f:
+        json.dump(res, f, indent=2, sort_keys=True)
+        f.write("\n")
+    os.replace(path + ".tmp", path)
 
 
 def core_fmax(rep, clock):
@@ -565,25 +568,16 @@ def seeds(name, out_root, results, seed_list, jobs):
         die(f"{name}: {rpath} is of other sources than this tree: build it again first")
     if not res.get("fits") or "nextpnr_args" not in res:
         die(f"{name}: the build did not place and route (or predates `seeds`): build it again")
-    args = list(res["nextpnr_args"])
-    drop = {"--seed", "--report", "--asc", "--textcfg"}
-    base = []
-    it = iter(range(len(args)))
-    for i in it:
-        if args[i] in drop:
-            next(it, None)
-        else:
-            base.append(args[i])
+    # The build's arguments, run from bdir/seed<N>: its relative paths one level up.
+    base = [os.path.join("..", a) if a == "netlist.json" or a.endswith((".pcf", ".lpf")) else a
+            for a in res["nextpnr_args"]]
     fam = res["family"]
 
     def one(seed):
         sdir = os.path.join(bdir, f"seed{seed}")
         shutil.rmtree(sdir, ignore_errors=True)
         os.makedirs(sdir)
-        cmd = [tool("yowasp-nextpnr-" + fam)] + [os.path.join("..", a) if a == "netlist.json"
-                                                 or a.endswith((".pcf", ".lpf")) else a
-                                                 for a in base]
-        cmd += ["--seed", str(seed), "--report", "report.json"]
+        cmd = [tool("yowasp-nextpnr-" + fam), *base, "--seed", str(seed), "--report", "report.json"]
         rc, _, _ = run_pnr(cmd, sdir, os.path.join(sdir, "nextpnr.log"))
         if rc != 0 or not os.path.exists(os.path.join(sdir, "report.json")):
             die(f"{name}: nextpnr seed {seed} failed (exit {rc}), see {sdir}/nextpnr.log")
@@ -593,23 +587,19 @@ def seeds(name, out_root, results, seed_list, jobs):
             cp = critical_path(f.read())
         return seed, core_fmax(rep, res["clock_mhz"]), cp
 
-    from concurrent.futures import ThreadPoolExecutor
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as ex:
         got = list(ex.map(one, seed_list))
-    per = {"1": res["fmax_mhz"]} if res.get("fmax_mhz") is not None else {}
-    paths = {"1": res.get("critical_path")}
+    per = {str(PNR_SEED): res["fmax_mhz"]} if res.get("fmax_mhz") is not None else {}
+    paths = {str(PNR_SEED): res.get("critical_path")}
     for seed, fm, cp in got:
         per[str(seed)] = fm
         paths[str(seed)] = cp
     res["fmax_seeds"] = dict(sorted(per.items(), key=lambda kv: int(kv[0])))
     res["critical_path_seeds"] = dict(sorted(paths.items(), key=lambda kv: int(kv[0])))
-    with open(rpath + ".tmp", "w") as f:
-        json.dump(res, f, indent=2, sort_keys=True)
-        f.write("\n")
-    os.replace(rpath + ".tmp", rpath)
+    write_result(rpath, res)
     v = sorted(per.values())
     print(f"synth: {name}: Fmax over seeds {', '.join(res['fmax_seeds'])}: min {v[0]}, median "
-          f"{statistics.median(v):.2f}, max {v[-1]} MHz (seed 1: {res['fmax_mhz']})")
+          f"{statistics.median(v):.2f}, max {v[-1]} MHz (seed {PNR_SEED}: {res['fmax_mhz']})")
     for seed, cp in res["critical_path_seeds"].items():
         if cp:
             print(f"  seed {seed}: {per.get(seed)} MHz  {cp['from']} -> {cp['to']}")
@@ -832,7 +822,7 @@ def main():
     d.add_argument("target")
     d.add_argument("--out", default=os.path.join(ROOT, "build", "synth-out"))
     d.add_argument("--results", default=os.path.join(ROOT, "synth", "results"))
-    d.add_argument("--seeds", default="2,3,4,5", help="comma-separated seeds (seed 1 is the build's)")
+    d.add_argument("--seeds", default="2,3,4,5", help="comma-separated seeds (not the build's, 1)")
     d.add_argument("-j", "--jobs", type=int, default=2)
     sub.add_parser("list")
     a = ap.parse_args()
@@ -840,9 +830,11 @@ def main():
         try:
             sl = [int(x) for x in a.seeds.split(",") if x.strip()]
         except ValueError:
-            die(f"--seeds: comma-separated integers 2..{2**31 - 1}, got '{a.seeds}'")
-        if not sl or any(x < 2 or x >= 2**31 for x in sl):
-            die(f"--seeds: comma-separated integers 2..{2**31 - 1} (1 is the build's), got '{a.seeds}'")
+            die(f"--seeds: comma-separated integers 1..{2**31 - 1} other than {PNR_SEED}, got "
+                f"'{a.seeds}'")
+        if not sl or any(x < 1 or x >= 2**31 or x == PNR_SEED for x in sl):
+            die(f"--seeds: comma-separated integers 1..{2**31 - 1} other than {PNR_SEED} (the "
+                f"build's), got '{a.seeds}'")
         return seeds(a.target, a.out, a.results, sl, a.jobs)
     if a.cmd == "build":
         return build(a.target, a.out, a.results, a.strict_warnings, a.firmware)
