@@ -18,8 +18,8 @@
 //     S' = S - dec, not below floor   (decelerate; the first decelerating tick loads v_dec)
 //     S' = S - dec                    (stopping: ends when the old speed is below dec)
 // and the counters of steps to the end, to acc_steps and to dec_step. A step's sub-tick offset
-// (cycles before the end of its tick) comes from a 5-bit restoring division of the top 16 bits
-// of the overshoot P' and of S; the step is handed to the axis's output stage due on cycle
+// (cycles before the end of its tick) comes from a 5-bit restoring division of the top 12 bits
+// (SUB_W) of the overshoot P' and of S; the step is handed to the axis's output stage due on cycle
 // F + 68 - q (F: first cycle of the sample's frame). No multiplier, no divider: adders,
 // comparators, a 13-bit compare-and-subtract five times. Bit-exact counterpart: hexstep::AxisGen
 // and hexstep::TopModel (cpp_model/src/axis.cpp, top_model.cpp).
@@ -271,6 +271,9 @@ module hexstep_engine #(
   // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
   // p1_smask (t = 0 + V_DEC) and p1_cin (S + ~dec + 1) are registered with stage 1 at the
   // sample, from the phase, first-decelerating-tick and stopping flags that stage 1 takes.
+  // A mask selects the other operand after the adder (0 + x = x, and the masked low half
+  // carries nothing into the high half: p1_smask excludes p1_cin), so the adders take the block
+  // RAM data without a LUT in front of their carry chains.
   wire p1_pmask = p1_start;                                        // P starts at 0
 
   // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
@@ -283,6 +286,8 @@ module hexstep_engine #(
     end
   endfunction
   reg [SUB_W:0]   dv0, dv1;
+  // The unit whose first step is this cycle's (cycle 4i+4: stage 2's axis, just loaded).
+  wire [1:0]      dfirst = {2{kph_q[0]}} & {p2_ax[0], ~p2_ax[0]};
   // Due cycle F + 68 - q of the request, with q = {h, q0} (h: the first four quotient bits):
   // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
   // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
@@ -314,8 +319,8 @@ module hexstep_engine #(
 
   always @* begin
     // Division: a step of each unit; the quotient of the slot in stage 3 (cycle 4i+8).
-    dv0 = dstep(dr_q[0], ds_q[0]);
-    dv1 = dstep(dr_q[1], ds_q[1]);
+    dv0 = dstep(dfirst[0] ? pn_hi_q[31 -: SUB_W] : dr_q[0], ds_q[0]);
+    dv1 = dstep(dfirst[1] ? pn_hi_q[31 -: SUB_W] : dr_q[1], ds_q[1]);
 
     c_clamp = ct1_q | ~gt_q;
     case (p2_ph)
@@ -380,13 +385,13 @@ module hexstep_engine #(
   always @(posedge clk_i) begin
     case (kc)
       2'd2: begin  // low words of S, P, addend, limit (cycle 4i+2)
-        {cp0_q, pn_lo_q} <= {1'b0, (p1_pmask ? 32'd0 : rd1)} + {1'b0, rd0};
-        {ct0_q, t_lo_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, p1_cin);
+        {cp0_q, pn_lo_q} <= p1_pmask ? {1'b0, rd0} : {1'b0, rd1} + {1'b0, rd0};
+        {ct0_q, t_lo_q} <= p1_smask ? {1'b0, rd2} : add_ci(rd0, rd2, p1_cin);
         llo_q <= rd3;
       end
       2'd3: begin  // high words (cycle 4i+3)
         {step_q, pn_hi_q} <= phi_sum;
-        {ct1_q, t_hi_q} <= add_ci(p1_smask ? 32'd0 : rd0, rd2, ct0_q);
+        {ct1_q, t_hi_q} <= p1_smask ? {1'b0, rd2} : add_ci(rd0, rd2, ct0_q);
         cl0_q <= c_gt_lo;
         lhi_q <= rd3;
       end
@@ -409,10 +414,11 @@ module hexstep_engine #(
       due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
       due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h1;
     end
-    // Division units: loaded with the overshoot and the speed at the end of 4i+3 (the unit of
-    // the axis's parity), a restoring step at every other edge.
+    // Division units: loaded with the speed at the end of 4i+3 (the unit of the axis's
+    // parity), a restoring step at every other edge; the first step (4i+4) divides the
+    // overshoot's top bits straight from pn_hi_q (dfirst), so that the block RAM read and the
+    // 33-bit add behind it end in pn_hi_q alone.
     if (kph_q[3]) begin
-      dr_q[p1_ax[0]] <= phi_sum[31 -: SUB_W];
       ds_q[p1_ax[0]] <= rd0[31 -: SUB_W];
       dz_q[p1_ax[0]] <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
       dq_q[p1_ax[0]] <= 4'd0;
@@ -426,7 +432,7 @@ module hexstep_engine #(
       dq_q[1] <= {dq_q[1][2:0], dv1[0]};
     end
   end
-  wire [32:0] phi_sum = add_ci(p1_pmask ? 32'd0 : rd1, rd0, cp0_q);
+  wire [32:0] phi_sum = p1_pmask ? {1'b0, rd0} : add_ci(rd1, rd0, cp0_q);
 
   // ---------------------------------------------------------------------------------------
   // Control: next state of every axis.
