@@ -301,6 +301,7 @@ module hexstep_wb_fv #(
   (* keep *) wire [31:0] f_odat;         // u_dut.odat_q
   (* keep *) wire [3:0]  f_osel;         // u_dut.osel_q
   (* keep *) wire        f_oiss;         // u_dut.oiss_q
+  (* keep *) wire        f_ldc_ok;       // u_dut.fv_ldc_ok: the loader's step decodes are right
   wire f_busy_op = f_op != OP_IDLE && f_op != OP_INIT;
   wire f_stg_op = f_op == OP_SRD || f_op == OP_SWR;
   wire f_cfg_op = f_op == OP_CRD || f_op == OP_CWR;
@@ -321,7 +322,7 @@ module hexstep_wb_fv #(
     if ((f_op == OP_SWR || f_op == OP_CWR) && f_ocnt == 6'd1 && f_req)
       assert (f_odat == (((f_val & ~bmask) | wd) & f_mask));
     if (f_op == OP_PUSH) assert (wb_we_i && gw == W_CMD && wd[0] && f_otail != 2'd3 &&
-                                 f_ocnt <= 6'd25);
+                                 f_ocnt <= 6'd25 && f_ldc_ok);
   end
 
   // ---- bounded ack latency, proved by k-induction: the request's wait against the progress of

@@ -375,20 +375,61 @@ module hexstep_wb #(
     l_flags[F_DZ]        = l_dec_z;
   end
 
+  // Decodes of the loader step, registered: while op_q == OP_PUSH each equals its function of
+  // ocnt_q (asserted in hexstep_wb_fv). ocnt_q is 0 in idle, where a push starts, and changes
+  // in a push only at its bus cycles, to ocnt + 1; the decodes load f(0) in idle and f(ocnt + 1)
+  // at those edges, so no decode of the counter sits on the loader's paths.
+  wire       ldc_ld = idle || (op_q == OP_PUSH && bus_go);
+  wire [5:0] ldc_n = idle ? 6'd0 : ocnt_q + 6'd1;   // ocnt's value after the edge
+  wire [5:0] ldc_ns = ldc_n - 6'd1;                   // its loader step (data in rdq)
+  reg  [5:0] lst_q;                  // ocnt - 1: the loader step whose data is in rdq
+  reg        lz0_q, lz1_q, lrd_q;    // ocnt == 0, ocnt == 1, ocnt < LOADER_STEPS
+  reg        lhc_q;                  // ld_hi_cmp(ocnt - 1)
+  reg        lsh_q, linv_q;          // the word of step ocnt - 1 is stored shifted / inverted
+  reg  [5:0] ldst_q;                 // ld_dst(ocnt - 1)
+  reg  [1:0] lsb0_q, lsb1_q;         // bank and word of the staging word that step ocnt reads,
+  reg  [4:0] lsw0_q, lsw1_q;         // for V_END zero (1) and not (0): ld_src's two cases
+  always @(posedge clk_i) begin
+    if (ldc_ld) begin
+      lst_q <= ldc_ns;
+      lz0_q <= (ldc_n == 6'd0);
+      lz1_q <= (ldc_n == 6'd1);
+      lrd_q <= (ldc_n < LOADER_STEPS);
+      lhc_q <= ld_hi_cmp(ldc_ns);
+      lsh_q <= (ldc_ns == 6'd4) && (DFRAC_W < 32);
+      linv_q <= (ldc_ns == 6'd18) || (ldc_ns == 6'd20);
+      ldst_q <= ld_dst(ldc_ns);
+      lsb0_q <= stg_bank(ld_src(ldc_n, 1'b0));
+      lsw0_q <= stg_word(ld_src(ldc_n, 1'b0));
+      lsb1_q <= stg_bank(ld_src(ldc_n, 1'b1));
+      lsw1_q <= stg_word(ld_src(ldc_n, 1'b1));
+    end
+  end
+
+`ifdef FORMAL
+  // The decodes against their functions of ocnt_q (asserted while op_q == OP_PUSH).
+  wire [5:0] fv_ls = ocnt_q - 6'd1;
+  (* keep *) wire fv_ldc_ok =
+      lst_q == fv_ls && lz0_q == (ocnt_q == 6'd0) && lz1_q == (ocnt_q == 6'd1) &&
+      lrd_q == (ocnt_q < LOADER_STEPS) && lhc_q == ld_hi_cmp(fv_ls) &&
+      lsh_q == ((fv_ls == 6'd4) && (DFRAC_W < 32)) &&
+      linv_q == (fv_ls == 6'd18 || fv_ls == 6'd20) &&
+      ldst_q == ld_dst(fv_ls) &&
+      lsb0_q == stg_bank(ld_src(ocnt_q, 1'b0)) && lsw0_q == stg_word(ld_src(ocnt_q, 1'b0)) &&
+      lsb1_q == stg_bank(ld_src(ocnt_q, 1'b1)) && lsw1_q == stg_word(ld_src(ocnt_q, 1'b1));
+`endif
+
   // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
   // slot stores it: DEC_FRAC left-aligned, DEC and FLOOR inverted). It is the write data of
-  // the next bus cycle and odat's next value, a function of rdq and ocnt alone, so that the
-  // operations' other data (the bus, the merge of a staging write) is not on its path.
-  wire [5:0]  lstep = ocnt_q - 6'd1;         // the loader step whose data is in rdq
-  wire [31:0] lw = (lstep == 6'd4 && DFRAC_W < 32) ? (rdq_q << (32 - DFRAC_W)) :
-                   (lstep == 6'd18 || lstep == 6'd20) ? ~rdq_q : rdq_q;
+  // the next bus cycle and odat's next value, a function of rdq and the step's decodes alone,
+  // so that the operations' other data (the bus, the merge of a staging write) is not on its
+  // path.
+  wire [31:0] lw = lsh_q ? (rdq_q << (32 - DFRAC_W)) : linv_q ? ~rdq_q : rdq_q;
 
   integer k, i;
   reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
   reg [1:0]  qv;
-  reg [5:0]  pdst;
-  reg [4:0]  psrc;
   reg        cmp;                             // borrow of held - data (- borrow): data > held
   reg [31:0] cmp_unused;
 
@@ -494,7 +535,7 @@ module hexstep_wb #(
           end
           ocnt_d = ocnt_q + 6'd1;
         end
-        if (proc_cyc && ocnt_q != 6'd0) begin
+        if (proc_cyc && !lz0_q) begin
           // The data of step ocnt - 1 (read three cycles ago, registered): its checks (the
           // word it writes at the next bus cycle is lw).
           // held - data - borrow, one carry chain; cmp is the borrow out. lb is the borrow of
@@ -503,8 +544,8 @@ module hexstep_wb #(
           // no decode sits in front of the chain.
           {cmp, cmp_unused} = add_ci(lh_q, ~rdq_q, ~lb_q);
           cmp = ~cmp;
-          if (ocnt_q == 6'd1 || ld_hi_cmp(lstep)) lb_d = 1'b0;
-          case (lstep)
+          if (lz1_q || lhc_q) lb_d = 1'b0;
+          case (lst_q)
             6'd0: begin ljog_d = rdq_q[1]; ldir_d = rdq_q[0]; end
             6'd1: begin lh_d = rdq_q; lz_d[0] = (rdq_q == 32'd0); end
             6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq_q == 32'd0); end
@@ -565,7 +606,7 @@ module hexstep_wb #(
   // this cycle produces (odat_d). ----
   always @* begin
     m_re = 1'b0; m_init = 1'b0; m_rbank = 2'd0; m_raddr = 8'd0; m_waddr = 8'd0; m_we = 4'd0;
-    m_wdata = 32'd0; psrc = 5'd0; pdst = 6'd0;
+    m_wdata = 32'd0;
     case (op_q)
       OP_INIT: begin
         // Word owd of axis oax in every bank: staging 0, the mirror to the reset configuration.
@@ -587,21 +628,19 @@ module hexstep_wb #(
       end
       OP_PUSH: begin
         // Read the staging word of step ocnt, write the data of step ocnt - 1.
-        if (ocnt_q < LOADER_STEPS) begin
-          psrc = ld_src(ocnt_q, lz_q[8] & lz_q[9]);
+        if (lrd_q) begin
           m_re = 1'b1;
-          m_rbank = stg_bank(psrc);
-          m_raddr = {oax_q, stg_word(psrc)};
+          m_rbank = (lz_q[8] & lz_q[9]) ? lsb1_q : lsb0_q;
+          m_raddr = {oax_q, (lz_q[8] & lz_q[9]) ? lsw1_q : lsw0_q};
         end
-        if (ocnt_q == 6'd0) begin
+        if (lz0_q) begin
           m_we = 4'b0100;                              // the zero word of the slot
           m_waddr = {oax_q, slot_word(otail_q, 3'd7)};
           m_wdata = 32'd0;
         end else begin
-          pdst = ld_dst(lstep);
-          if (pdst[5]) begin
-            m_we[pdst[4:3]] = 1'b1;
-            m_waddr = {oax_q, slot_word(otail_q, pdst[2:0])};
+          if (ldst_q[5]) begin
+            m_we[ldst_q[4:3]] = 1'b1;
+            m_waddr = {oax_q, slot_word(otail_q, ldst_q[2:0])};
             m_wdata = lw;
           end
         end
