@@ -180,9 +180,21 @@ module hexstep_engine #(
   endgenerate
   wire [1:0]         s_act = act_q[si*2 +: 2];
   wire [1:0]         s_head = inc3(s_act);
-  // si * 21 as shifted adds (no multiplier cell in the core, make lint)
-  wire [7:0]         si21 = {1'b0, si, 4'b0000} + {3'b000, si, 2'b00} + {5'b00000, si};
-  wire [13:0]        s_sf = sf_q[si21 +: 14];
+  // The sampled axis's flags (running move, head of the queue): a case on si with constant
+  // offsets (a part-select at si * 21 is a shifter behind an adder).
+  reg  [13:0]        s_sf;
+  always @* begin
+    case (si)
+      3'd0: s_sf = sf_q[0 +: 14];
+      3'd1: s_sf = sf_q[21 +: 14];
+      3'd2: s_sf = sf_q[42 +: 14];
+      3'd3: s_sf = sf_q[63 +: 14];
+      3'd4: s_sf = sf_q[84 +: 14];
+      3'd5: s_sf = sf_q[105 +: 14];
+      3'd6: s_sf = sf_q[126 +: 14];
+      default: s_sf = sf_q[147 +: 14];   // 3'd7
+    endcase
+  end
   wire [6:0]         s_af = s_sf[6:0];                 // flags of the running move
   wire [6:0]         s_hf = s_sf[13:7];                // flags of the head of the queue
   wire               s_valid = smp_slot & ~abort[si];
@@ -257,7 +269,8 @@ module hexstep_engine #(
 
   // ---------------------------------------------------------------------------------------
   // Datapath registers (not reset).
-  reg        cp0_q, ct0_q, step_q, ct1_q, cl0_q, gt_q, dfc_q;
+  reg        cp0_q, ct0_q, step_q, ct1_q, cl0_q, gt_q;
+  reg        dfh_q, dfe_q, dfl_q;        // P'_hi >= DEC_FRAC in halves: high >, high ==, low >=
   reg [31:0] pn_lo_q, t_lo_q, llo_q, pn_hi_q, t_hi_q, lhi_q;
   reg [31:0] re_n_q, ra_n_q, rd_n_q;
   reg        zre_q, zra_q, zrd_q, zrd0_q, sell_q;
@@ -306,6 +319,14 @@ module hexstep_engine #(
   // selected before its compare.
   wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
 
+  // The deceleration point P'_hi >= DEC_FRAC (cycle 4i+4), in 16-bit halves whose carry chains
+  // take the block RAM word directly (P', a register, is the inverted operand):
+  // rd3 + ~P' + 1 carries iff rd3 >= P' (high half), rd3 + ~P' iff rd3 > P' (low half).
+  wire [17:0] dfc_hc = {1'b0, rd3[31:16], 1'b1} + {1'b0, ~pn_hi_q[31:16], 1'b1};
+  wire [17:0] dfc_lc = {1'b0, rd3[15:0], 1'b1} + {1'b0, ~pn_hi_q[15:0], 1'b0};
+  wire        unused_dfc = ^{dfc_hc[16:0], dfc_lc[16:0]};
+  wire        dfc = dfh_q | (dfe_q & dfl_q);
+
   // Limit > t, as the carry out of L + ~t (+ the carry of the low half).
   wire c_gt_lo, c_gt_hi;
   wire [31:0] unused_lo, unused_hi;
@@ -330,7 +351,7 @@ module hexstep_engine #(
     endcase
     c_stop_end = p2_stop & (~ct1_q | p2_fl[F_DZ]);
     c_cnt_end = ~p2_fl[F_JOG] & zre_q;
-    c_dec_trig = ~p2_fl[F_JOG] & (p2_ph != PH_DECEL) & ((zrd_q & dfc_q) | (zrd0_q & step_q));
+    c_dec_trig = ~p2_fl[F_JOG] & (p2_ph != PH_DECEL) & ((zrd_q & dfc) | (zrd0_q & step_q));
     c_acc_end = (p2_ph == PH_ACCEL) & (c_clamp | (~p2_fl[F_JOG] & zra_q));
     c_ended = c_cnt_end | c_stop_end;
     c_ph_n = c_ended ? PH_IDLE : c_dec_trig ? PH_DECEL : c_acc_end ? PH_CRUISE : p2_ph;
@@ -404,7 +425,9 @@ module hexstep_engine #(
         zra_q <= (rd1 == {31'd0, step_q});
         zrd_q <= (rd2 == {31'd0, step_q});
         zrd0_q <= (rd2 == 32'd0);
-        dfc_q <= (pn_hi_q >= rd3);
+        dfh_q <= ~dfc_hc[17];
+        dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
+        dfl_q <= ~dfc_lc[17];
       end
       default: begin  // cycle 4i+5: select of S
         sell_q <= c_sell;
