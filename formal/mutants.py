@@ -73,6 +73,8 @@ MUTANTS = [
      "d_consume <= p2_start & p2_fl[F_EMPTY];", "engine", "bmc_cons"),
     ("jog ends at its step count", "hexstep_engine.v",
      "c_cnt_end = ~p2_fl[F_JOG] & zre_q;", "c_cnt_end = zre_q;", "engine", "bmc_cnt"),
+    ("loader step decode one step off", "hexstep_wb.v",
+     "lz1_q <= !idle && (ocnt_q == 6'd0);", "lz1_q <= !idle && (ocnt_q == 6'd1);", "wb", "prove"),
 ]
 
 

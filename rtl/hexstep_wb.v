@@ -164,8 +164,8 @@ module hexstep_wb #(
   reg              ocan_q, ocan_d;            // loader: cancelled by a flush
   // Loader flags and holding register.
   reg  [31:0]      lh_q, lh_d;
-  reg  [31:0]      rdq_q;                     // the loader's read data, registered
-  reg              lb_q, lb_d;                // borrow of a low-word compare
+  reg  [31:0]      rdqn_q;                    // the loader's read data, registered inverted
+  reg              lc_q, lc_d;                // carry into a compare (1, or a low word's carry)
   reg  [15:0]      lz_q, lz_d;                // zero flags
   reg  [5:0]       lg_q, lg_d;                // greater-than flags
   reg              ljog_q, ljog_d, ldir_q, ldir_d;
@@ -378,31 +378,47 @@ module hexstep_wb #(
   // Decodes of the loader step, registered: while op_q == OP_PUSH each equals its function of
   // ocnt_q (asserted in hexstep_wb_fv). ocnt_q is 0 in idle, where a push starts, and changes
   // in a push only at its bus cycles, to ocnt + 1; the decodes load f(0) in idle and f(ocnt + 1)
-  // at those edges, so no decode of the counter sits on the loader's paths.
+  // at those edges, so no decode of the counter sits on the loader's paths. f(ocnt + 1) is
+  // written as a function of ocnt itself (the step ocnt + 1 - 1 is ocnt; in a push ocnt <= 25),
+  // and the staging word of the read as a table computed at elaboration, so no adder is in front
+  // of these registers either.
+  // LD_RD: entry 2 * j + v (8 bits, 7 used) is {stg_bank, stg_word} of ld_src(j + 1, v).
+  function [1023:0] ld_rd_tab(input integer unused_arg);
+    integer j;
+    reg [4:0] w0, w1;
+    begin
+      ld_rd_tab = 1024'd0;
+      for (j = 0; j < 64; j = j + 1) begin
+        w0 = ld_src(j[5:0] + 6'd1, 1'b0);
+        w1 = ld_src(j[5:0] + 6'd1, 1'b1);
+        ld_rd_tab[j*16 +: 7] = {stg_bank(w0), stg_word(w0)};
+        ld_rd_tab[j*16 + 8 +: 7] = {stg_bank(w1), stg_word(w1)};
+      end
+    end
+  endfunction
+  localparam [1023:0] LD_RD = ld_rd_tab(0);
+  localparam [6:0]    LD_RD_0V0 = {stg_bank(ld_src(6'd0, 1'b0)), stg_word(ld_src(6'd0, 1'b0))};
+  localparam [6:0]    LD_RD_0V1 = {stg_bank(ld_src(6'd0, 1'b1)), stg_word(ld_src(6'd0, 1'b1))};
   wire       ldc_ld = idle || (op_q == OP_PUSH && bus_go);
-  wire [5:0] ldc_n = idle ? 6'd0 : ocnt_q + 6'd1;   // ocnt's value after the edge
-  wire [5:0] ldc_ns = ldc_n - 6'd1;                   // its loader step (data in rdq)
   reg  [5:0] lst_q;                  // ocnt - 1: the loader step whose data is in rdq
   reg        lz0_q, lz1_q, lrd_q;    // ocnt == 0, ocnt == 1, ocnt < LOADER_STEPS
   reg        lhc_q;                  // ld_hi_cmp(ocnt - 1)
   reg        lsh_q, linv_q;          // the word of step ocnt - 1 is stored shifted / inverted
   reg  [5:0] ldst_q;                 // ld_dst(ocnt - 1)
-  reg  [1:0] lsb0_q, lsb1_q;         // bank and word of the staging word that step ocnt reads,
-  reg  [4:0] lsw0_q, lsw1_q;         // for V_END zero (1) and not (0): ld_src's two cases
+  reg  [6:0] lsr0_q, lsr1_q;         // {bank, word} of the staging word that step ocnt reads,
+                                     // for V_END nonzero (0) and zero (1): ld_src's two cases
   always @(posedge clk_i) begin
     if (ldc_ld) begin
-      lst_q <= ldc_ns;
-      lz0_q <= (ldc_n == 6'd0);
-      lz1_q <= (ldc_n == 6'd1);
-      lrd_q <= (ldc_n < LOADER_STEPS);
-      lhc_q <= ld_hi_cmp(ldc_ns);
-      lsh_q <= (ldc_ns == 6'd4) && (DFRAC_W < 32);
-      linv_q <= (ldc_ns == 6'd18) || (ldc_ns == 6'd20);
-      ldst_q <= ld_dst(ldc_ns);
-      lsb0_q <= stg_bank(ld_src(ldc_n, 1'b0));
-      lsw0_q <= stg_word(ld_src(ldc_n, 1'b0));
-      lsb1_q <= stg_bank(ld_src(ldc_n, 1'b1));
-      lsw1_q <= stg_word(ld_src(ldc_n, 1'b1));
+      lst_q <= idle ? 6'h3F : ocnt_q;
+      lz0_q <= idle;
+      lz1_q <= !idle && (ocnt_q == 6'd0);
+      lrd_q <= idle || (ocnt_q < LOADER_STEPS - 6'd1);
+      lhc_q <= !idle && ld_hi_cmp(ocnt_q);
+      lsh_q <= !idle && (ocnt_q == 6'd4) && (DFRAC_W < 32);
+      linv_q <= !idle && ((ocnt_q == 6'd18) || (ocnt_q == 6'd20));
+      ldst_q <= idle ? 6'd0 : ld_dst(ocnt_q);
+      lsr0_q <= idle ? LD_RD_0V0 : LD_RD[{ocnt_q, 1'b0, 3'b000} +: 7];
+      lsr1_q <= idle ? LD_RD_0V1 : LD_RD[{ocnt_q, 1'b1, 3'b000} +: 7];
     end
   end
 
@@ -415,8 +431,8 @@ module hexstep_wb #(
       lsh_q == ((fv_ls == 6'd4) && (DFRAC_W < 32)) &&
       linv_q == (fv_ls == 6'd18 || fv_ls == 6'd20) &&
       ldst_q == ld_dst(fv_ls) &&
-      lsb0_q == stg_bank(ld_src(ocnt_q, 1'b0)) && lsw0_q == stg_word(ld_src(ocnt_q, 1'b0)) &&
-      lsb1_q == stg_bank(ld_src(ocnt_q, 1'b1)) && lsw1_q == stg_word(ld_src(ocnt_q, 1'b1));
+      lsr0_q == {stg_bank(ld_src(ocnt_q, 1'b0)), stg_word(ld_src(ocnt_q, 1'b0))} &&
+      lsr1_q == {stg_bank(ld_src(ocnt_q, 1'b1)), stg_word(ld_src(ocnt_q, 1'b1))};
 `endif
 
   // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
@@ -424,13 +440,17 @@ module hexstep_wb #(
   // the next bus cycle and odat's next value, a function of rdq and the step's decodes alone,
   // so that the operations' other data (the bus, the merge of a staging write) is not on its
   // path.
-  wire [31:0] lw = lsh_q ? (rdq_q << (32 - DFRAC_W)) : linv_q ? ~rdq_q : rdq_q;
+  // rdq: the data itself (rdqn_q holds it inverted, the compare's operand as the carry chain
+  // takes it, with no LUT in front).
+  wire [31:0] rdq = ~rdqn_q;
+  wire [31:0] lw = lsh_q ? (rdq << (32 - DFRAC_W)) : linv_q ? rdqn_q : rdq;
 
   integer k, i;
   reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
   reg [1:0]  qv;
   reg        cmp;                             // borrow of held - data (- borrow): data > held
+  reg        ccy;                             // its carry out (no borrow)
   reg [31:0] cmp_unused;
 
   always @(*) begin
@@ -439,11 +459,11 @@ module hexstep_wb #(
     abort_cmd_d = {NAXES{1'b0}};
     op_d = op_q; oax_d = oax_q; owd_d = owd_q; odat_d = odat_q; oiss_d = oiss_q;
     ocnt_d = ocnt_q; otail_d = otail_q; ocan_d = ocan_q; osel_d = osel_q;
-    lh_d = lh_q; lb_d = lb_q; lz_d = lz_q; lg_d = lg_q; ljog_d = ljog_q; ldir_d = ldir_q;
+    lh_d = lh_q; lc_d = lc_q; lz_d = lz_q; lg_d = lg_q; ljog_d = ljog_q; ldir_d = ldir_q;
     ack_d = 1'b0;
     dat_d = 32'h0;
     overrun = 1'b0;
-    cmp = 1'b0; cmp_unused = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
+    cmp = 1'b0; ccy = 1'b0; cmp_unused = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
 
     // The operation registers take the bus's address, data and byte enables on every idle
     // cycle (they are read only within an operation, which a request starts from idle), so
@@ -538,40 +558,40 @@ module hexstep_wb #(
         if (proc_cyc && !lz0_q) begin
           // The data of step ocnt - 1 (read three cycles ago, registered): its checks (the
           // word it writes at the next bus cycle is lw).
-          // held - data - borrow, one carry chain; cmp is the borrow out. lb is the borrow of
-          // a low word's compare (steps 6, 10, 14, 18) until the high word's (8, 12, 16, 20)
-          // has used it, and 0 at every other compare (cleared at step 0 and by each use), so
-          // no decode sits in front of the chain.
-          {cmp, cmp_unused} = add_ci(lh_q, ~rdq_q, ~lb_q);
-          cmp = ~cmp;
-          if (lz1_q || lhc_q) lb_d = 1'b0;
+          // held - data - borrow as held + ~data + carry, one carry chain; cmp is the borrow
+          // out. lc is the carry of a low word's compare (steps 6, 10, 14, 18) until the high
+          // word's (8, 12, 16, 20) has used it, and 1 at every other compare (set at step 0 and
+          // by each use), so no decode sits in front of the chain.
+          {ccy, cmp_unused} = add_ci(lh_q, rdqn_q, lc_q);
+          cmp = ~ccy;
+          if (lz1_q || lhc_q) lc_d = 1'b1;
           case (lst_q)
-            6'd0: begin ljog_d = rdq_q[1]; ldir_d = rdq_q[0]; end
-            6'd1: begin lh_d = rdq_q; lz_d[0] = (rdq_q == 32'd0); end
-            6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq_q == 32'd0); end
-            6'd3: begin lg_d[1] = cmp; lz_d[2] = (rdq_q == 32'd0); end
-            6'd4: lz_d[3] = (rdq_q == 32'd0);
-            6'd5: begin lh_d = rdq_q; lz_d[4] = (rdq_q == 32'd0); end
-            6'd6: begin lb_d = cmp; lz_d[6] = (rdq_q == 32'd0); end
-            6'd7: begin lh_d = rdq_q; lz_d[5] = (rdq_q == 32'd0); end
+            6'd0: begin ljog_d = rdq[1]; ldir_d = rdq[0]; end
+            6'd1: begin lh_d = rdq; lz_d[0] = (rdq == 32'd0); end
+            6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq == 32'd0); end
+            6'd3: begin lg_d[1] = cmp; lz_d[2] = (rdq == 32'd0); end
+            6'd4: lz_d[3] = (rdq == 32'd0);
+            6'd5: begin lh_d = rdq; lz_d[4] = (rdq == 32'd0); end
+            6'd6: begin lc_d = ccy; lz_d[6] = (rdq == 32'd0); end
+            6'd7: begin lh_d = rdq; lz_d[5] = (rdq == 32'd0); end
             6'd8: begin
-              lg_d[2] = cmp; lz_d[7] = (rdq_q == 32'd0);
+              lg_d[2] = cmp; lz_d[7] = (rdq == 32'd0);
             end
-            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = rdq_q;
-            6'd10: begin lb_d = cmp; lz_d[8] = (rdq_q == 32'd0); end
+            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = rdq;
+            6'd10: begin lc_d = ccy; lz_d[8] = (rdq == 32'd0); end
             6'd12: begin
-              lg_d[3] = cmp; lz_d[9] = (rdq_q == 32'd0);
+              lg_d[3] = cmp; lz_d[9] = (rdq == 32'd0);
             end
-            6'd14: lb_d = cmp;
+            6'd14: lc_d = ccy;
             6'd16: begin
               lg_d[4] = cmp;
             end
-            6'd18: begin lb_d = cmp; lz_d[10] = (rdq_q == 32'd0); end
+            6'd18: begin lc_d = ccy; lz_d[10] = (rdq == 32'd0); end
             6'd20: begin
-              lg_d[5] = cmp; lz_d[11] = (rdq_q == 32'd0);
+              lg_d[5] = cmp; lz_d[11] = (rdq == 32'd0);
             end
-            6'd21: lz_d[12] = (rdq_q == 32'd0);
-            6'd22: lz_d[13] = (rdq_q == 32'd0);
+            6'd21: lz_d[12] = (rdq == 32'd0);
+            6'd22: lz_d[13] = (rdq == 32'd0);
             default: ;
           endcase
           odat_d = lw;
@@ -630,8 +650,8 @@ module hexstep_wb #(
         // Read the staging word of step ocnt, write the data of step ocnt - 1.
         if (lrd_q) begin
           m_re = 1'b1;
-          m_rbank = (lz_q[8] & lz_q[9]) ? lsb1_q : lsb0_q;
-          m_raddr = {oax_q, (lz_q[8] & lz_q[9]) ? lsw1_q : lsw0_q};
+          {m_rbank, m_raddr[4:0]} = (lz_q[8] & lz_q[9]) ? lsr1_q : lsr0_q;
+          m_raddr[7:5] = oax_q;
         end
         if (lz0_q) begin
           m_we = 4'b0100;                              // the zero word of the slot
@@ -724,8 +744,8 @@ module hexstep_wb #(
   // writes them before reading them).
   always @(posedge clk_i) begin
     odat_q <= odat_d;  osel_q <= osel_d;  otail_q <= otail_d;
-    if (data_cyc) rdq_q <= bus_rdata_i;
-    lh_q <= lh_d;  lb_q <= lb_d;  lz_q <= lz_d;  lg_q <= lg_d;  ljog_q <= ljog_d;  ldir_q <= ldir_d;
+    if (data_cyc) rdqn_q <= ~bus_rdata_i;
+    lh_q <= lh_d;  lc_q <= lc_d;  lz_q <= lz_d;  lg_q <= lg_d;  ljog_q <= ljog_d;  ldir_q <= ldir_d;
   end
 
   assign wb_ack_o = ack_q;
