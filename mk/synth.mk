@@ -4,6 +4,7 @@
 #                               bitstreams), then the table: synth/results/summary.md (printed)
 #                               and docs/SYNTH.md; one JSON per target in synth/results/
 #   make synth-<target>         one target (e.g. make synth-ulx3s), results as above
+#   make synth-modules          iCE40 cells of hexstep_top per module (synth_ice40 -noflatten)
 # Builds go to $(BUILD)/synth-out/<target>/ (bitstreams: <target>.bin / .bit there). An
 # out-of-context row that does not fit is reported as such; a board that does not fit or misses
 # its core clock, or any Yosys warning not in synth/yosys_waivers.txt on a board, fails the job
@@ -19,7 +20,7 @@ SYNTH_SOC_TARGETS := soc_icebreaker soc_ulx3s
 SYNTH_OUT     := $(BUILD)/synth-out
 SOC_FW_HEX    := $(BUILD)/soc/hexstep_fw.hex
 
-.PHONY: synth synth-soc soc-fw $(addprefix synth-,$(SYNTH_TARGETS) $(SYNTH_SOC_TARGETS))
+.PHONY: synth synth-soc synth-modules soc-fw $(addprefix synth-,$(SYNTH_TARGETS) $(SYNTH_SOC_TARGETS))
 
 synth: deps
 	@r=0; for t in $(SYNTH_TARGETS); do \
@@ -43,3 +44,6 @@ synth-soc: soc-fw
 	done; \
 	$(SYNTH_FLOW) summary --doc docs/SYNTH.md || r=1; \
 	exit $$r
+
+synth-modules: deps
+	$(SYNTH_FLOW) modules --out $(SYNTH_OUT)

