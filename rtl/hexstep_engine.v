@@ -309,12 +309,19 @@ module hexstep_engine #(
   // (the frame and ~h do not overlap): each candidate is one 6-bit add of a constant.
   reg  [6:0]      due_a_q, due_b_q;
   wire            du = p2_ax[0];                            // the unit of stage 2's axis
-  wire [3:0]      dh = {dq_q[du][2:0], du ? dv1[0] : dv0[0]};
+  // The fourth quotient bit: the compare of dstep on the unit's own remainder (the first-step
+  // select, dfirst, is 0 in that cycle and stays off this path).
+  wire            dq3 = {dr_q[du], 1'b0} >= {1'b0, ds_q[du]};
   wire [6:0]      dbase = {p2_frame, 5'd0};
   localparam [5:0] DUE_HALF = DUE_OFFSET[6:1] - 6'd16;      // 18 = (68 - 32) / 2
-  wire [5:0]      dhf = {p2_frame, ~dh};
-  wire [6:0]      due_h = {dhf + DUE_HALF, 1'b1};           // q0 = 1: F + 37 + 2 * ~h
-  wire [6:0]      due_h1 = {dhf + DUE_HALF + 6'd1, 1'b0};   // q0 = 0: one more
+  // {frame, ~h} + 18 with h = {dq[2:0], dq3}: 18 is even, so the sum is {U, ~dq3} with
+  // U = {frame, ~dq[2:0]} + 9 (registers only), and one more is {U, 1} or {U + 1, 0}: the
+  // fourth quotient bit only selects, after the adds.
+  wire [4:0]      dhu = {p2_frame, ~dq_q[du][2:0]} + DUE_HALF[5:1];
+  wire [4:0]      dhu1 = {p2_frame, ~dq_q[du][2:0]} + DUE_HALF[5:1] + 5'd1;
+  wire            unused_due_half = DUE_HALF[0];
+  wire [6:0]      due_h = {dhu, ~dq3, 1'b1};                          // q0 = 1: F + 37 + 2 * ~h
+  wire [6:0]      due_h1 = dq3 ? {dhu, 2'b10} : {dhu1, 2'b00};        // q0 = 0: one more
   // The last quotient bit (cycle 4i+8): the last step (dstep) of the slot's unit, on operands
   // selected before its compare.
   wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
