@@ -74,7 +74,7 @@ MUTANTS = [
     ("jog ends at its step count", "hexstep_engine.v",
      "c_cnt_end = ~p2_fl[F_JOG] & zre_q;", "c_cnt_end = zre_q;", "engine", "bmc_cnt"),
     ("loader step decode one step off", "hexstep_wb.v",
-     "lz1_q <= !idle && (ocnt_q == 6'd0);", "lz1_q <= !idle && (ocnt_q == 6'd1);", "wb", "prove"),
+     "lz1_q <= (lnx == 6'd0);", "lz1_q <= (lnx == 6'd1);", "wb", "prove"),
 ]
 
 

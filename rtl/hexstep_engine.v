@@ -92,6 +92,8 @@ module hexstep_engine #(
   // uses (cpp_model kSubtickBits): the rounding of 12 bits costs at most 2^-12 / v cycles, a
   // quarter of the 0.001-step allowance, and two restoring steps fit one cycle.
   localparam integer SUB_W = 12;
+  // Bits of sf_q per axis: the flags (7 bits) of three moves of the queue ring.
+  localparam integer SF_W = 21;
 
   // ---------------------------------------------------------------------------------------
   // Cycle counter.
@@ -110,11 +112,11 @@ module hexstep_engine #(
   reg  [NS*2-1:0]  ph_q, act_q, qn_q;
   // Flags of the moves in the queue ring by position: [6:0] the running (or last) move, [13:7]
   // the head of the queue, [20:14] the one after it (shifted on a pop).
-  reg  [NS*21-1:0] sf_q;
+  reg  [NS*SF_W-1:0] sf_q;
   reg  [NS-1:0]    run_d, decf_d, stop_d, chain_d, running_d, starting_d;
   reg  [NS-1:0]    spend_d, ppend_d, fstart_d, fstop_d;
   reg  [NS*2-1:0]  ph_d, act_d, qn_d;
-  reg  [NS*21-1:0] sf_d;
+  reg  [NS*SF_W-1:0] sf_d;
 
   // The per-axis inputs, padded to 8 slots.
   wire [NS-1:0] pending, accepts_n, pending_n, tgt, abort, start_w, stop_w;
@@ -156,7 +158,7 @@ module hexstep_engine #(
   genvar ga;
   generate
     for (ga = 0; ga < NS; ga = ga + 1) begin : g_dec
-      wire [6:0] hf = sf_q[ga*21 + 7 +: 7];       // flags of the head of the queue
+      wire [6:0] hf = sf_q[ga*SF_W + 7 +: 7];       // flags of the head of the queue
       // Values in the sample cycle (see above).
       wire       n_fstart = boundary ? spend_q[ga] : fstart_q[ga];
       wire       n_fstop = boundary ? ppend_q[ga] : fstop_q[ga];
@@ -181,18 +183,18 @@ module hexstep_engine #(
   wire [1:0]         s_act = act_q[si*2 +: 2];
   wire [1:0]         s_head = inc3(s_act);
   // The sampled axis's flags (running move, head of the queue): a case on si with constant
-  // offsets (a part-select at si * 21 is a shifter behind an adder).
+  // offsets (a part-select at si * SF_W is a shifter behind an adder).
   reg  [13:0]        s_sf;
   always @* begin
     case (si)
-      3'd0: s_sf = sf_q[0 +: 14];
-      3'd1: s_sf = sf_q[21 +: 14];
-      3'd2: s_sf = sf_q[42 +: 14];
-      3'd3: s_sf = sf_q[63 +: 14];
-      3'd4: s_sf = sf_q[84 +: 14];
-      3'd5: s_sf = sf_q[105 +: 14];
-      3'd6: s_sf = sf_q[126 +: 14];
-      default: s_sf = sf_q[147 +: 14];   // 3'd7
+      3'd0: s_sf = sf_q[0*SF_W +: 14];
+      3'd1: s_sf = sf_q[1*SF_W +: 14];
+      3'd2: s_sf = sf_q[2*SF_W +: 14];
+      3'd3: s_sf = sf_q[3*SF_W +: 14];
+      3'd4: s_sf = sf_q[4*SF_W +: 14];
+      3'd5: s_sf = sf_q[5*SF_W +: 14];
+      3'd6: s_sf = sf_q[6*SF_W +: 14];
+      default: s_sf = sf_q[7*SF_W +: 14];   // 3'd7
     endcase
   end
   wire [6:0]         s_af = s_sf[6:0];                 // flags of the running move
@@ -289,13 +291,17 @@ module hexstep_engine #(
   // RAM data without a LUT in front of their carry chains.
   wire p1_pmask = p1_start;                                        // P starts at 0
 
+  // The quotient bit of one restoring division step: 2*rem >= s.
+  function dbit(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
+    dbit = {rem, 1'b0} >= {1'b0, s};
+  endfunction
   // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
   // rem <= s holds throughout (the overshoot is below the speed), so rem fits SUB_W bits.
   function [SUB_W:0] dstep(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
-    reg [SUB_W:0] r2;
+    reg [SUB_W-1:0] r2;                  // 2*rem, its top bit dropped (the result's width)
     begin
-      r2 = {rem, 1'b0};
-      dstep = (r2 >= {1'b0, s}) ? {r2[SUB_W-1:0] - s, 1'b1} : {r2[SUB_W-1:0], 1'b0};
+      r2 = {rem[SUB_W-2:0], 1'b0};
+      dstep = dbit(rem, s) ? {r2 - s, 1'b1} : {r2, 1'b0};
     end
   endfunction
   reg [SUB_W:0]   dv0, dv1;
@@ -306,25 +312,26 @@ module hexstep_engine #(
   // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
   // cycle 4i+7, when the fourth step of the slot's unit (p2's) is computed; the last step in
   // 4i+8 only selects one. With F = 32 * frame, F + 37 + 2 * ~h = 2 * ({frame, ~h} + 18) + 1
-  // (the frame and ~h do not overlap): each candidate is one 6-bit add of a constant.
+  // (the frame and ~h do not overlap); the adds are on registers only (see dhu below).
   reg  [6:0]      due_a_q, due_b_q;
   wire            du = p2_ax[0];                            // the unit of stage 2's axis
   // The fourth quotient bit: the compare of dstep on the unit's own remainder (the first-step
   // select, dfirst, is 0 in that cycle and stays off this path).
-  wire            dq3 = {dr_q[du], 1'b0} >= {1'b0, ds_q[du]};
+  wire            dq3 = dbit(dr_q[du], ds_q[du]);
   wire [6:0]      dbase = {p2_frame, 5'd0};
   localparam [5:0] DUE_HALF = DUE_OFFSET[6:1] - 6'd16;      // 18 = (68 - 32) / 2
   // {frame, ~h} + 18 with h = {dq[2:0], dq3}: 18 is even, so the sum is {U, ~dq3} with
   // U = {frame, ~dq[2:0]} + 9 (registers only), and one more is {U, 1} or {U + 1, 0}: the
   // fourth quotient bit only selects, after the adds.
-  wire [4:0]      dhu = {p2_frame, ~dq_q[du][2:0]} + DUE_HALF[5:1];
-  wire [4:0]      dhu1 = {p2_frame, ~dq_q[du][2:0]} + DUE_HALF[5:1] + 5'd1;
+  wire [4:0]      dhb = {p2_frame, ~dq_q[du][2:0]};
+  wire [4:0]      dhu = dhb + DUE_HALF[5:1];
+  wire [4:0]      dhu1 = dhb + (DUE_HALF[5:1] + 5'd1);
   wire            unused_due_half = DUE_HALF[0];
   wire [6:0]      due_h = {dhu, ~dq3, 1'b1};                          // q0 = 1: F + 37 + 2 * ~h
   wire [6:0]      due_h1 = dq3 ? {dhu, 2'b10} : {dhu1, 2'b00};        // q0 = 0: one more
   // The last quotient bit (cycle 4i+8): the last step (dstep) of the slot's unit, on operands
   // selected before its compare.
-  wire            q0_last = {dr_q[p3_ax[0]], 1'b0} >= {1'b0, ds_q[p3_ax[0]]};
+  wire            q0_last = dbit(dr_q[p3_ax[0]], ds_q[p3_ax[0]]);
 
   // The deceleration point P'_hi >= DEC_FRAC (cycle 4i+4), in 16-bit halves whose carry chains
   // take the block RAM word directly (P', a register, is the inverted operand):
@@ -472,7 +479,7 @@ module hexstep_engine #(
   reg [1:0]  qv, pos;
   reg [NS-1:0] flush, pop, consumed, refused, freed;
   reg [6:0]  req_due;
-  reg [20:0] sfk;
+  reg [SF_W-1:0] sfk;
 
   always @* begin
     run_d = run_q; decf_d = decf_q; stop_d = stop_q; chain_d = chain_q;
@@ -481,7 +488,7 @@ module hexstep_engine #(
     flush = {NS{1'b0}}; pop = {NS{1'b0}}; consumed = {NS{1'b0}};
     refused = {NS{1'b0}}; freed = {NS{1'b0}};
     req_due = q0_last ? due_a_q : due_b_q;
-    pos = 2'd0; sfk = 21'd0;
+    pos = 2'd0; sfk = {SF_W{1'b0}};
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
     // an abort since the sample cancels it.
@@ -565,14 +572,14 @@ module hexstep_engine #(
     for (k = 0; k < NAXES; k = k + 1) begin
       qv = qn_q[k*2 +: 2];
       push_ok = push_i && ({29'd0, push_axis_i} == k) && !flush[k];
-      sfk = sf_q[k*21 +: 21];
+      sfk = sf_q[k*SF_W +: SF_W];
       if (pop[k]) sfk = {7'd0, sfk[20:7]};
       pos = qv + 2'd1 - {1'b0, pop[k]};
       if (push_ok) begin
         if (pos == 2'd1) sfk[13:7] = push_flags_i;
         else sfk[20:14] = push_flags_i;
       end
-      sf_d[k*21 +: 21] = sfk;
+      sf_d[k*SF_W +: SF_W] = sfk;
       if (flush[k]) qn_d[k*2 +: 2] = 2'd0;
       else qn_d[k*2 +: 2] = qv - {1'b0, pop[k]} + {1'b0, push_ok};
       freed[k] = (qn_d[k*2 +: 2] < qv);
@@ -592,7 +599,7 @@ module hexstep_engine #(
       spend_q <= {NS{1'b0}}; ppend_q <= {NS{1'b0}};
       fstart_q <= {NS{1'b0}}; fstop_q <= {NS{1'b0}};
       ph_q <= {NS*2{1'b0}}; act_q <= {NS*2{1'b0}}; qn_q <= {NS*2{1'b0}};
-      sf_q <= {NS*21{1'b0}};
+      sf_q <= {NS*SF_W{1'b0}};
       p1_valid <= 1'b0; p2_valid <= 1'b0; p3_valid <= 1'b0;
       si_q <= 3'd0; smp_oh_q <= {NS{1'b0}};
     end else begin

@@ -335,6 +335,13 @@ module hexstep_wb #(
     endcase
   endfunction
 
+  // The slot stores the word of step j shifted (DEC_FRAC left-aligned) / inverted (~DEC).
+  function ld_shl(input [5:0] j);
+    ld_shl = (j == 6'd4) && (DFRAC_W < 32);
+  endfunction
+  function ld_inv(input [5:0] j);
+    ld_inv = (j == 6'd18) || (j == 6'd20);
+  endfunction
   // Steps whose compare is the high word of a 64-bit compare (the low word's borrow enters).
   function ld_hi_cmp(input [5:0] j);
     ld_hi_cmp = (j == 6'd8) || (j == 6'd12) || (j == 6'd16) || (j == 6'd20);
@@ -397,8 +404,10 @@ module hexstep_wb #(
     end
   endfunction
   localparam [1023:0] LD_RD = ld_rd_tab(0);
-  localparam [6:0]    LD_RD_0V0 = {stg_bank(ld_src(6'd0, 1'b0)), stg_word(ld_src(6'd0, 1'b0))};
-  localparam [6:0]    LD_RD_0V1 = {stg_bank(ld_src(6'd0, 1'b1)), stg_word(ld_src(6'd0, 1'b1))};
+  // The loader step whose data is in rdq after the edge (ocnt - 1): 63 from idle (ocnt = 0),
+  // ocnt itself at a push's bus cycle. The functions need no guard for idle: ld_dst, ld_hi_cmp,
+  // ld_shl and ld_inv are 0 at 63, and LD_RD's entry 63 is ld_src(0, v).
+  wire [5:0] lnx = idle ? 6'h3F : ocnt_q;
   wire       ldc_ld = idle || (op_q == OP_PUSH && bus_go);
   reg  [5:0] lst_q;                  // ocnt - 1: the loader step whose data is in rdq
   reg        lz0_q, lz1_q, lrd_q;    // ocnt == 0, ocnt == 1, ocnt < LOADER_STEPS
@@ -409,16 +418,16 @@ module hexstep_wb #(
                                      // for V_END nonzero (0) and zero (1): ld_src's two cases
   always @(posedge clk_i) begin
     if (ldc_ld) begin
-      lst_q <= idle ? 6'h3F : ocnt_q;
+      lst_q <= lnx;
       lz0_q <= idle;
-      lz1_q <= !idle && (ocnt_q == 6'd0);
+      lz1_q <= (lnx == 6'd0);
       lrd_q <= idle || (ocnt_q < LOADER_STEPS - 6'd1);
-      lhc_q <= !idle && ld_hi_cmp(ocnt_q);
-      lsh_q <= !idle && (ocnt_q == 6'd4) && (DFRAC_W < 32);
-      linv_q <= !idle && ((ocnt_q == 6'd18) || (ocnt_q == 6'd20));
-      ldst_q <= idle ? 6'd0 : ld_dst(ocnt_q);
-      lsr0_q <= idle ? LD_RD_0V0 : LD_RD[{ocnt_q, 1'b0, 3'b000} +: 7];
-      lsr1_q <= idle ? LD_RD_0V1 : LD_RD[{ocnt_q, 1'b1, 3'b000} +: 7];
+      lhc_q <= ld_hi_cmp(lnx);
+      lsh_q <= ld_shl(lnx);
+      linv_q <= ld_inv(lnx);
+      ldst_q <= ld_dst(lnx);
+      lsr0_q <= LD_RD[{lnx, 1'b0, 3'b000} +: 7];
+      lsr1_q <= LD_RD[{lnx, 1'b1, 3'b000} +: 7];
     end
   end
 
@@ -428,15 +437,14 @@ module hexstep_wb #(
   (* keep *) wire fv_ldc_ok =
       lst_q == fv_ls && lz0_q == (ocnt_q == 6'd0) && lz1_q == (ocnt_q == 6'd1) &&
       lrd_q == (ocnt_q < LOADER_STEPS) && lhc_q == ld_hi_cmp(fv_ls) &&
-      lsh_q == ((fv_ls == 6'd4) && (DFRAC_W < 32)) &&
-      linv_q == (fv_ls == 6'd18 || fv_ls == 6'd20) &&
+      lsh_q == ld_shl(fv_ls) && linv_q == ld_inv(fv_ls) &&
       ldst_q == ld_dst(fv_ls) &&
       lsr0_q == {stg_bank(ld_src(ocnt_q, 1'b0)), stg_word(ld_src(ocnt_q, 1'b0))} &&
       lsr1_q == {stg_bank(ld_src(ocnt_q, 1'b1)), stg_word(ld_src(ocnt_q, 1'b1))};
 `endif
 
   // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
-  // slot stores it: DEC_FRAC left-aligned, DEC and FLOOR inverted). It is the write data of
+  // slot stores it: DEC_FRAC left-aligned, DEC inverted). It is the write data of
   // the next bus cycle and odat's next value, a function of rdq and the step's decodes alone,
   // so that the operations' other data (the bus, the merge of a staging write) is not on its
   // path.
