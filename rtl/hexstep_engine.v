@@ -224,8 +224,8 @@ module hexstep_engine #(
   reg [2:0]  p2_ax;
   reg [1:0]  p2_ph, p2_frame;
   reg [6:0]  p2_fl;
-  reg        p3_we, p3_valid, p3_start, p3_abort, p3_dir;
-  reg [NAXES-1:0] req_pre_q;
+  reg        p3_we, p3_valid, p3_abort, p3_dir;
+  reg [NAXES-1:0] req_pre_q, tl_pre_q;
   integer rk;
   reg [2:0]  p3_ax;
   // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
@@ -638,12 +638,16 @@ module hexstep_engine #(
       p2_ax <= p1_ax; p2_ph <= p1_ph; p2_frame <= p1_frame; p2_fl <= p1_fl;
       p3_we <= p2_valid & p2_gen;
       p3_ax <= p2_ax;
-      p3_start <= p2_start; p3_abort <= p2_abort | abort[p2_ax]; p3_dir <= p2_fl[F_DIR];
+      p3_abort <= p2_abort | abort[p2_ax]; p3_dir <= p2_fl[F_DIR];
       // The step request of the coming commit, one flag per axis (d_* are from cycle 4i+5,
       // stage 2 becomes stage 3 here); an abort at the commit edge itself still cancels it.
       for (rk = 0; rk < NAXES; rk = rk + 1)
         req_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen && d_req
                          && ({29'd0, p2_ax} == rk);
+      // The same for the DIR target load of a start (tgt_load_o).
+      for (rk = 0; rk < NAXES; rk = rk + 1)
+        tl_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && p2_start
+                        && ({29'd0, p2_ax} == rk);
     end else begin
       p1_abort <= p1_abort | abort[p1_ax];
       p2_abort <= p2_abort | abort[p2_ax];
@@ -676,7 +680,7 @@ module hexstep_engine #(
       assign run_o[gk] = running_q[gk] | spend_q[gk] | fstart_q[gk];
       assign phase_o[gk*2 +: 2] = run_q[gk] ? ph_q[gk*2 +: 2] : PH_IDLE;
       assign req_o[gk] = p3_valid && req_pre_q[gk] && kph_q[0] && !abort[gk];
-      assign tgt_load_o[gk] = cm_ok && p3_start && !d_consume && ({29'd0, cj} == gk);
+      assign tgt_load_o[gk] = p3_valid && tl_pre_q[gk] && kph_q[0] && !abort[gk];
     end
   endgenerate
   assign g_o = g_q;
