@@ -156,12 +156,13 @@ module hexstep_wb_fv #(
     if (ack) assert (cs);
     if (p_have && ack) assert (!p_ack);
   end
-  // Latency (docs/ARCHITECTURE.md, bus interface): an operation accepted at the edge ending
-  // cycle c starts at the first bus cycle b >= c + 2 (b <= c + 5); the longest is CMD.push,
-  // acked on the edge b + 100, so in cycle b + 101: at most 106 cycles after the request's first
-  // cycle. A request that came while the memory initialization ran waits for it too (8 * NAXES
-  // bus cycles from reset).
-  localparam integer ACK_MAX = 106;
+  // Latency (docs/ARCHITECTURE.md, bus interface): a request is taken at the edge ending its
+  // first cycle and accepted at the next; an operation accepted at the edge ending cycle c
+  // starts at the first bus cycle b >= c + 2 (b <= c + 5); the longest is CMD.push, acked on
+  // the edge b + 100, so in cycle b + 101: at most 107 cycles after the request's first cycle.
+  // A request that came while the memory initialization ran waits for it too (8 * NAXES bus
+  // cycles from reset).
+  localparam integer ACK_MAX = 107;
   localparam integer ACK_MAX_INIT = 32 * NAXES + 5 + ACK_MAX;
   (* keep *) wire [2:0] f_op, f_oax;     // u_dut.op_q, u_dut.oax_q (connected by the .sby)
   reg [8:0] f_wait;                 // cycles the current request has waited for its ack
@@ -302,6 +303,8 @@ module hexstep_wb_fv #(
   (* keep *) wire [3:0]  f_osel;         // u_dut.osel_q
   (* keep *) wire        f_oiss;         // u_dut.oiss_q
   (* keep *) wire        f_ldc_ok;       // u_dut.fv_ldc_ok: the loader's step decodes are right
+  (* keep *) wire        f_cap;          // u_dut.cap_q: the request was taken (decoded)
+  (* keep *) wire        f_rq_ok;        // u_dut.fv_rq_ok: its registered decodes are the bus's
   wire f_busy_op = f_op != OP_IDLE && f_op != OP_INIT;
   wire f_stg_op = f_op == OP_SRD || f_op == OP_SWR;
   wire f_cfg_op = f_op == OP_CRD || f_op == OP_CWR;
@@ -319,7 +322,11 @@ module hexstep_wb_fv #(
     if (f_op == OP_SWR || f_op == OP_CWR) assert (f_ocnt <= 6'd1 && (f_ocnt == 6'd0 || f_oiss));
     if ((f_op == OP_SWR || f_op == OP_CWR) && f_ocnt == 6'd0)
       assert (f_odat == wb_dat_i && f_osel == wb_sel_i);
-    if ((f_op == OP_SWR || f_op == OP_CWR) && f_ocnt == 6'd1 && f_req)
+    // The merged word from the cycle after the read data on (kc = 3, the bus cycle of the
+    // write); in the cycle before (kc = 2) the held write data.
+    if ((f_op == OP_SWR || f_op == OP_CWR) && f_ocnt == 6'd1 && kc == 2'd2)
+      assert (f_odat == wb_dat_i && f_osel == wb_sel_i);
+    if ((f_op == OP_SWR || f_op == OP_CWR) && f_ocnt == 6'd1 && kc == 2'd3 && f_req)
       assert (f_odat == (((f_val & ~bmask) | wd) & f_mask));
     if (f_op == OP_PUSH) assert (wb_we_i && gw == W_CMD && wd[0] && f_otail != 2'd3 &&
                                  f_ocnt <= 6'd25 && f_ldc_ok);
@@ -342,20 +349,25 @@ module hexstep_wb_fv #(
       assert (f_owd <= 5'd7 && f_oax < NAXES);
       if (cs) assert (!f_post);
     end
-    if (f_op == OP_IDLE && cs && !ack) assert (f_wait <= f_base && (!f_post || f_wait == 9'd0));
+    // In idle a request is taken (f_cap) at its first edge once the initialization is over, and
+    // accepted at the next.
+    if (f_op == OP_IDLE && cs && !ack)
+      assert (f_cap ? (f_wait >= 9'd1 && f_wait <= f_base + 1 && (!f_post || f_wait == 9'd1))
+                    : (f_wait <= f_base && (!f_post || f_wait == 9'd0)));
+    if (f_cap) assert (cs && !ack && f_op == OP_IDLE && f_rq_ok);
     if (f_busy_op) begin
       // Before the first bus cycle: accepted at most kc + 2 cycles ago (at a bus cycle: armed
       // at the edge before, or accepted at that edge and not armed).
-      if (f_preiss) assert ((kc == 2'd3 ? (f_arm ? f_wait <= f_base + 5 : f_wait == f_base + 1)
-                                        : f_wait <= f_base + f_kc + 2) && f_wait >= 9'd1);
+      if (f_preiss) assert ((kc == 2'd3 ? (f_arm ? f_wait <= f_base + 6 : f_wait == f_base + 2)
+                                        : f_wait <= f_base + f_kc + 3) && f_wait >= 9'd2);
       else assert (f_arm);
       if (f_op != OP_PUSH && f_oiss) begin
-        assert (f_wait <= f_base + f_kc + 6);
+        assert (f_wait <= f_base + f_kc + 7);
         if (f_ocnt == 6'd0) assert (kc <= 2'd1);
         else assert (kc >= 2'd2);
       end
       if (f_op == OP_PUSH && f_ocnt != 6'd0)
-        assert (f_wait <= f_base + 4 * {3'd0, f_ocnt} + 2 + f_kc);
+        assert (f_wait <= f_base + 4 * {3'd0, f_ocnt} + 3 + f_kc);
     end
   end
 

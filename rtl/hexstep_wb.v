@@ -7,19 +7,21 @@
 // tests drive the bus through the constants generated from that file. Counterpart:
 // hexstep::TopModel (cpp_model/src/top_model.cpp).
 //
-// Bus: classic single cycles, 32-bit data, byte addresses (adr[1:0] ignored), sel gates each
-// byte lane of a write (also for command and write-1-to-clear bits). A request is
-// cyc & stb & !ack_q while the bus engine is idle. Registers in flip-flops are acted on at the
+// Bus: classic single cycles, 32-bit data, byte addresses (adr[1:0] ignored), sel gates each byte
+// lane of a write (also for command and write-1-to-clear bits). A request is cyc & stb & !ack_q
+// while the bus engine is idle; it is taken (decoded into registers) at the edge ending its first
+// cycle and acted on at the next, the request's edge. Registers in flip-flops are acted on at the
 // request's edge and acked in the next cycle. The staging words (STEPS..DEC_FRAC) and the pulse
 // configuration mirror live in the engine's block RAM, reachable on the bus cycles of the frame
 // (every fourth cycle, g[1:0] == 3): a staging read acks two cycles after the first bus cycle
-// following the request, a staging write (read, merge byte lanes and implemented bits, write)
-// at the second bus cycle; a configuration write is a read-modify-write of its mirror word like
-// a staging write, and the live register takes the merged value on the edge of the mirror
-// write, which acks; a configuration read answers from the mirror like a staging read. CMD.push runs the loader: 25 bus cycles reading the staging words
-// and writing the queue slot (inverted deceleration, aligned deceleration fraction, resolved
-// floor, a zero word), checking the refusal rules on the way; it acks at the commit. ack_o is a
-// register; there is no err_o and no stall_o. Unmapped addresses read 0 and are acked.
+// following the request, a staging write (read, merge byte lanes and implemented bits, write) at
+// the second bus cycle; a configuration write is a read-modify-write of its mirror word like a
+// staging write, and the live register takes the merged value on the edge of the mirror write,
+// which acks; a configuration read answers from the mirror like a staging read. CMD.push runs the
+// loader: 25 bus cycles reading the staging words and writing the queue slot (inverted
+// deceleration, aligned deceleration fraction, resolved floor, a zero word), checking the refusal
+// rules on the way; it acks at the commit. ack_o is a register; there is no err_o and no stall_o.
+// wb_dat_o is 0 except with the ack of a read. Unmapped addresses read 0 and are acked.
 //
 // After reset the bus engine first initializes the memory (staging words 0, the mirror to the
 // reset configuration) on 8 * NAXES bus cycles; requests wait.
@@ -140,6 +142,7 @@ module hexstep_wb #(
   // ---- state ----
   reg              ack_q, ack_d;
   reg  [31:0]      dat_q, dat_d;
+  reg              rdk_q;                     // the ack (if ack_q) is of a read: dat_q is its data
   reg              irq_q, irq_d;
   reg              es1_q, es2_q;              // e-stop pin synchronizer
   reg              estop_q, estop_d;          // latched e-stop
@@ -175,9 +178,6 @@ module hexstep_wb #(
 
   // ---- bus request decode ----
   wire        idle  = (op_q == OP_IDLE);
-  wire        req   = wb_cyc_i & wb_stb_i & ~ack_q & idle;
-  wire        wr    = req & wb_we_i;
-  wire        rd    = req & ~wb_we_i;
   wire [31:0] bmask = {{8{wb_sel_i[3]}}, {8{wb_sel_i[2]}}, {8{wb_sel_i[1]}}, {8{wb_sel_i[0]}}};
   wire [31:0] wdat  = wb_dat_i & bmask;
   // Block number (128-byte blocks): 0 global, 2..NAXES+1 the axes; higher address bits (a map
@@ -196,6 +196,60 @@ module hexstep_wb #(
   wire        w_cfg = CFG_WORDS[widx];
   wire [2:0]  ak    = blk[2:0] - 3'd2;     // the axis (block number - 2, modulo 8)
   wire        unused_adr = &{1'b0, wb_adr_i[1:0]};
+  // The request, decoded a cycle ahead: a request seen in cycle c (cyc & stb & !ack_q while
+  // the bus engine is idle, not taken yet) is taken at the edge ending c (cap_q), which
+  // registers the decodes of its address and direction; it is acted on at the edge ending c + 1
+  // (req) and acked in c + 2. A B4 classic master holds the request (address, data, byte
+  // enables) until its ack, so the registered decodes are those of the request still on the
+  // bus, whose data and byte enables are read directly (asserted in hexstep_wb_fv:
+  // fv_rq_ok). Every decision of the request therefore starts at flip-flops.
+  reg              cap_q;                     // the request on the bus was taken: act on it
+  reg              rq_we_q;                   // its decodes (loaded on every cycle)
+  reg              rq_stg_q, rq_cfg_q;        // a staging / configuration word of an axis
+  reg  [7:0]       rq_gw_q;                   // global word i (0..7)
+  reg              rq_cmd_q, rq_err_q, rq_plo_q;   // CMD, ERR, POS_LO of an axis
+  reg              rq_ast_q, rq_phi_q;        // STATUS, POS_HI of an axis
+  reg              rq_gr_q;                   // global word 0..15 (read data: gwords)
+  reg  [3:0]       rq_gidx_q;                 // its number
+  reg  [NAXES-1:0] rq_hit_q;                  // the axis (one-hot)
+  wire        take  = wb_cyc_i & wb_stb_i & ~ack_q & idle & ~cap_q;
+  wire        req   = cap_q & wb_cyc_i & wb_stb_i;
+  wire        wr    = req & rq_we_q;
+  wire        rd    = req & ~rq_we_q;
+  integer     rqk;
+  always @(posedge clk_i) begin
+    cap_q <= !rst_i && take;
+    rq_we_q <= wb_we_i;
+    rq_stg_q <= a_hit && w_stg;
+    rq_cfg_q <= a_hit && w_cfg;
+    for (rqk = 0; rqk < 8; rqk = rqk + 1) rq_gw_q[rqk] <= g_hit && ({27'd0, widx} == rqk);
+    rq_cmd_q <= a_hit && (widx == W_CMD);
+    rq_err_q <= a_hit && (widx == W_ERR);
+    rq_plo_q <= a_hit && (widx == W_POS_LO);
+    rq_ast_q <= a_hit && (widx == W_STATUS);
+    rq_phi_q <= a_hit && (widx == W_POS_HI);
+    rq_gr_q <= g_hit && !widx[4];
+    rq_gidx_q <= widx[3:0];
+    for (rqk = 0; rqk < NAXES; rqk = rqk + 1) rq_hit_q[rqk] <= a_hit && ({29'd0, ak} == rqk);
+  end
+`ifdef FORMAL
+  // The registered decodes against those of the request on the bus (asserted while cap_q).
+  integer fvk;
+  reg     fv_hit_ok;
+  always @* begin
+    fv_hit_ok = 1'b1;
+    for (fvk = 0; fvk < NAXES; fvk = fvk + 1)
+      if (rq_hit_q[fvk] != (a_hit && ({29'd0, ak} == fvk))) fv_hit_ok = 1'b0;
+    for (fvk = 0; fvk < 8; fvk = fvk + 1)
+      if (rq_gw_q[fvk] != (g_hit && ({27'd0, widx} == fvk))) fv_hit_ok = 1'b0;
+  end
+  (* keep *) wire fv_rq_ok =
+      fv_hit_ok && rq_we_q == wb_we_i && rq_stg_q == (a_hit && w_stg) &&
+      rq_cfg_q == (a_hit && w_cfg) && rq_cmd_q == (a_hit && (widx == W_CMD)) &&
+      rq_err_q == (a_hit && (widx == W_ERR)) && rq_plo_q == (a_hit && (widx == W_POS_LO)) &&
+      rq_ast_q == (a_hit && (widx == W_STATUS)) && rq_phi_q == (a_hit && (widx == W_POS_HI)) &&
+      rq_gr_q == (g_hit && !widx[4]) && rq_gidx_q == widx[3:0];
+`endif
   wire        bus_cyc = kph_i[3];
   wire        unused_kph = kph_i[0];           // (the commit cycle: the engine's)
   reg         arm_q;                             // an operation was there in the last cycle
@@ -208,14 +262,12 @@ module hexstep_wb #(
   // The engine's abort: ABORT written at the last edge or the e-stop latched, as one register
   // (so that the output stages see a flip-flop, not a gate).
   reg  [NAXES-1:0] abort_q;
-  // abort_q and flush_i padded to 8 axes, for indexing with a 3-bit axis number.
-  wire [7:0] abort8, flush8;
+  // flush_i padded to 8 axes, for indexing with a 3-bit axis number.
+  wire [7:0] flush8;
   generate
     if (NAXES < 8) begin : g_pad
-      assign abort8 = {{(8-NAXES){1'b0}}, abort_q};
       assign flush8 = {{(8-NAXES){1'b0}}, flush_i};
     end else begin : g_full
-      assign abort8 = abort_q;
       assign flush8 = flush_i;
     end
   endgenerate
@@ -252,7 +304,8 @@ module hexstep_wb #(
   assign gwords[G_INFO0*32 +: 32]    = {DFRAC_W[7:0], STEP_W[7:0], ACC_W[7:0], 8'd64};
   assign gwords[G_INFO1*32 +: 32]    = {8'd8, 8'd5, POS_W[7:0], PULSE_W[7:0]};
   assign gwords[16*32-1:10*32]       = {(6*32){1'b0}};
-  wire [31:0] grd = (widx[4] == 1'b0) ? gwords[{widx[3:0], 5'd0} +: 32] : 32'h0;
+  // (Read data by the registered decodes of the request, rq_*, valid at its request edge.)
+  wire [31:0] grd = rq_gr_q ? gwords[{rq_gidx_q, 5'd0} +: 32] : 32'h0;
   // Axis blocks: STATUS, ERR, POS_LO, POS_HI (words 18..21) from flip-flops, selected field
   // by field over the axes (one small multiplexer per field, not one per word of every axis);
   // the other words read through the memory or 0.
@@ -264,7 +317,7 @@ module hexstep_wb #(
   always @* begin
     r_status = 6'd0; r_err = 3'd0; r_pos = 32'd0; r_poshi = {PHW{1'b0}};
     for (m = 0; m < NAXES; m = m + 1)
-      if ({29'd0, ak} == m) begin
+      if (rq_hit_q[m]) begin
         r_status = {2'd2 - qn_i[m*2 +: 2], run_i[m], phase_i[m*2 +: 2], busy_i[m]};
         r_err = errf_q[m*3 +: 3];
         r_pos = pos_lo[m*32 +: 32];
@@ -283,10 +336,16 @@ module hexstep_wb #(
       assign r_hi = {32{r_poshi[0]}};
     end
   endgenerate
-  wire [31:0] ard = (widx == W_STATUS) ? {26'd0, r_status} :
-                    (widx == W_ERR)    ? {29'd0, r_err} :
-                    (widx == W_POS_LO) ? r_pos :
-                    (widx == W_POS_HI) ? r_hi : 32'h0;
+  wire [31:0] ard = rq_ast_q ? {26'd0, r_status} :
+                    rq_err_q ? {29'd0, r_err} :
+                    rq_plo_q ? r_pos :
+                    rq_phi_q ? r_hi : 32'h0;
+  // The flip-flop registers' read data at the registered decodes of the request, whatever the
+  // request: dat_q takes it on every cycle that does not ack a memory read, so that the
+  // request decode (idle, cyc, stb) is not on the read data's path. wb_dat_o shows it only
+  // with the ack of a read (rdk_q, from the operation and wb_we_i alone) and is 0 otherwise.
+  // Unmapped addresses read 0.
+  wire [31:0] rrd = grd | ard;   // (at most one of them is not 0)
 
   // ---- loader microprogram: staging word read at step j ----
   function [4:0] ld_src(input [5:0] j, input ve_zero);
@@ -451,15 +510,26 @@ module hexstep_wb #(
   // rdq: the data itself (rdqn_q holds it inverted, the compare's operand as the carry chain
   // takes it, with no LUT in front).
   wire [31:0] rdq = ~rdqn_q;
+  // A staging or configuration write's merged word: the byte lanes written (odat_q) over the
+  // word read (rdq), masked to the implemented bits.
+  wire [31:0] mg = ((rdq & ~osel_mask) | (odat_q & osel_mask)) & mw_mask;
   wire [31:0] lw = lsh_q ? (rdq << (32 - DFRAC_W)) : linv_q ? rdqn_q : rdq;
 
   integer k, i;
   reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
   reg [1:0]  qv;
-  reg        cmp;                             // borrow of held - data (- borrow): data > held
-  reg        ccy;                             // its carry out (no borrow)
-  reg [31:0] cmp_unused;
+  reg        lcv_q, lcy_q;                    // a compare was made: its carry (registered)
+  reg  [5:0] lcs_q;                           // its loader step
+  wire       cmp = ~lcy_q;                    // its borrow of held - data (- borrow): data > held
+  // The loader's compare held + ~data + carry in 16-bit halves, the high half for both of its
+  // carries in (carry select): its carry out (no borrow) is two 16-bit chains and a LUT
+  // behind the registers rather than one 32-bit chain.
+  wire [17:0] lcl  = {1'b0, lh_q[15:0], 1'b1} + {1'b0, rdqn_q[15:0], lc_q};
+  wire [16:0] lch0 = {1'b0, lh_q[31:16]} + {1'b0, rdqn_q[31:16]};
+  wire [17:0] lch1 = {1'b0, lh_q[31:16], 1'b1} + {1'b0, rdqn_q[31:16], 1'b1};
+  wire        ccy = lcl[17] ? lch1[17] : lch0[16];
+  wire        unused_lcmp = ^{lcl[16:0], lch0[15:0], lch1[16:0]};
 
   always @(*) begin
     cfg_d = cfg_q;  errf_d = errf_q;  poshi_d = poshi_q;
@@ -469,9 +539,9 @@ module hexstep_wb #(
     ocnt_d = ocnt_q; otail_d = otail_q; ocan_d = ocan_q; osel_d = osel_q;
     lh_d = lh_q; lc_d = lc_q; lz_d = lz_q; lg_d = lg_q; ljog_d = ljog_q; ldir_d = ldir_q;
     ack_d = 1'b0;
-    dat_d = 32'h0;
+    dat_d = rrd;
     overrun = 1'b0;
-    cmp = 1'b0; ccy = 1'b0; cmp_unused = 32'd0; drop = 1'b0; qv = 2'd0; i = 0;
+    drop = 1'b0; qv = 2'd0; i = 0;
 
     // The operation registers take the bus's address, data and byte enables on every idle
     // cycle (they are read only within an operation, which a request starts from idle), so
@@ -490,34 +560,29 @@ module hexstep_wb #(
 
     // ---- global registers ----
     estop_rise = es2_q & ~estop_q;
-    estop_d    = es2_q | (estop_q & ~(wr & g_hit & (widx == G_GSTATUS) & wdat[0]));
+    estop_d    = es2_q | (estop_q & ~(wr & rq_gw_q[G_GSTATUS[2:0]] & wdat[0]));
     if (req) begin
       ack_d = 1'b1;
-      if (g_hit) begin
-        if (rd) dat_d = grd;
-        if (wr && widx == G_ABORT)    abort_cmd_d = wdat[NAXES-1:0];
-        if (wr && widx == G_IRQ_EN)   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
-        if (wr && widx == G_IRQ_PEND) pend_d = pend_q & ~wdat;
-      end else if (a_hit) begin
-        if (rd) dat_d = ard;
-        if (w_stg || w_cfg) begin
-          // Staging word or configuration: a memory operation (configuration writes update the
-          // live register when the merged word is written to its mirror).
+      if (wr && rq_gw_q[G_ABORT[2:0]])    abort_cmd_d = wdat[NAXES-1:0];
+      if (wr && rq_gw_q[G_IRQ_EN[2:0]])   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
+      if (wr && rq_gw_q[G_IRQ_PEND[2:0]]) pend_d = pend_q & ~wdat;
+      if (rq_stg_q || rq_cfg_q) begin
+        // Staging word or configuration: a memory operation (configuration writes update the
+        // live register when the merged word is written to its mirror).
+        ack_d = 1'b0;
+        op_d = rq_stg_q ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
+      end
+      if (wr && rq_cmd_q && wdat[0]) begin
+        // The axis's drop (e-stop, abort) and queue fill, selected by the one-hot axis.
+        drop = estop_q | ((abort_q & rq_hit_q) != {NAXES{1'b0}});
+        for (i = 0; i < NAXES; i = i + 1)
+          if (rq_hit_q[i]) qv = qv | qn_i[i*2 +: 2];
+        if (!drop && qv == 2'd2) begin
+          overrun = 1'b1;
+        end else if (!drop) begin
           ack_d = 1'b0;
-          op_d = w_stg ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
+          op_d = OP_PUSH;
         end
-        if (wr && widx == W_CMD && wdat[0]) begin
-          drop = estop_q | abort8[ak];
-          qv = qn_i[ak*2 +: 2];
-          if (!drop && qv == 2'd2) begin
-            overrun = 1'b1;
-          end else if (!drop) begin
-            ack_d = 1'b0;
-            op_d = OP_PUSH;
-          end
-        end
-      end else if (rd) begin
-        dat_d = 32'h0;
       end
     end
 
@@ -536,19 +601,21 @@ module hexstep_wb #(
       end
       OP_SRD, OP_CRD, OP_SWR, OP_CWR: begin
         // Read the word at the first bus cycle; a read acks with its data two cycles later, a
-        // write merges it (byte enables, implemented bits) and writes it at the next bus cycle.
+        // write merges it (byte enables, implemented bits: mg, from the read data registered
+        // in rdqn_q) in the cycle after the data and writes it at the next bus cycle.
         if (bus_go && !oiss_q) oiss_d = 1'b1;
-        if (data_cyc && oiss_q && ocnt_q == 6'd0) begin
+        // (ocnt_q is 0 or 1 in these operations, asserted in hexstep_wb_fv: bit 0 tells.)
+        if (data_cyc && oiss_q && !ocnt_q[0]) begin
           if (op_q == OP_SRD || op_q == OP_CRD) begin
             ack_d = 1'b1;
             dat_d = bus_rdata_i;
             op_d = OP_IDLE;
           end else begin
-            odat_d = ((bus_rdata_i & ~osel_mask) | (odat_q & osel_mask)) & mw_mask;
             ocnt_d = 6'd1;
           end
         end
-        if (bus_go && oiss_q && ocnt_q == 6'd1) begin
+        if (proc_cyc && oiss_q && ocnt_q[0]) odat_d = mg;
+        if (bus_go && oiss_q && ocnt_q[0]) begin
           ack_d = 1'b1;
           op_d = OP_IDLE;
           ocnt_d = 6'd0;
@@ -566,38 +633,28 @@ module hexstep_wb #(
         if (proc_cyc && !lz0_q) begin
           // The data of step ocnt - 1 (read three cycles ago, registered): its checks (the
           // word it writes at the next bus cycle is lw).
-          // held - data - borrow as held + ~data + carry, one carry chain; cmp is the borrow
-          // out. lc is the carry of a low word's compare (steps 6, 10, 14, 18) until the high
-          // word's (8, 12, 16, 20) has used it, and 1 at every other compare (set at step 0 and
-          // by each use), so no decode sits in front of the chain.
-          {ccy, cmp_unused} = add_ci(lh_q, rdqn_q, lc_q);
-          cmp = ~ccy;
+          // held - data - borrow as held + ~data + carry (ccy, above). lc is the carry of a low
+          // word's compare (steps 6, 10, 14, 18) until the high word's (8, 12, 16, 20) has used
+          // it, and 1 at every other compare (set at step 0 and by each use), so no decode sits
+          // in front of the chain. The compare's carry is registered (lcy_q; cmp, its borrow)
+          // and written to lc / lg in the next cycle (the bus cycle, lcv_q), below: the next
+          // compare is four cycles later, the commit's checks (l_flags) after step 24.
           if (lz1_q || lhc_q) lc_d = 1'b1;
           case (lst_q)
             6'd0: begin ljog_d = rdq[1]; ldir_d = rdq[0]; end
             6'd1: begin lh_d = rdq; lz_d[0] = (rdq == 32'd0); end
-            6'd2: begin lg_d[0] = cmp; lz_d[1] = (rdq == 32'd0); end
-            6'd3: begin lg_d[1] = cmp; lz_d[2] = (rdq == 32'd0); end
+            6'd2: lz_d[1] = (rdq == 32'd0);
+            6'd3: lz_d[2] = (rdq == 32'd0);
             6'd4: lz_d[3] = (rdq == 32'd0);
             6'd5: begin lh_d = rdq; lz_d[4] = (rdq == 32'd0); end
-            6'd6: begin lc_d = ccy; lz_d[6] = (rdq == 32'd0); end
+            6'd6: lz_d[6] = (rdq == 32'd0);
             6'd7: begin lh_d = rdq; lz_d[5] = (rdq == 32'd0); end
-            6'd8: begin
-              lg_d[2] = cmp; lz_d[7] = (rdq == 32'd0);
-            end
+            6'd8: lz_d[7] = (rdq == 32'd0);
             6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = rdq;
-            6'd10: begin lc_d = ccy; lz_d[8] = (rdq == 32'd0); end
-            6'd12: begin
-              lg_d[3] = cmp; lz_d[9] = (rdq == 32'd0);
-            end
-            6'd14: lc_d = ccy;
-            6'd16: begin
-              lg_d[4] = cmp;
-            end
-            6'd18: begin lc_d = ccy; lz_d[10] = (rdq == 32'd0); end
-            6'd20: begin
-              lg_d[5] = cmp; lz_d[11] = (rdq == 32'd0);
-            end
+            6'd10: lz_d[8] = (rdq == 32'd0);
+            6'd12: lz_d[9] = (rdq == 32'd0);
+            6'd18: lz_d[10] = (rdq == 32'd0);
+            6'd20: lz_d[11] = (rdq == 32'd0);
             6'd21: lz_d[12] = (rdq == 32'd0);
             6'd22: lz_d[13] = (rdq == 32'd0);
             default: ;
@@ -607,12 +664,26 @@ module hexstep_wb #(
       end
       default: ;
     endcase
+    // The loader compare of the last cycle (its step lcs_q): lc for a low word's, a flag of lg
+    // for a high or single word's.
+    if (lcv_q) begin
+      case (lcs_q)
+        6'd2:  lg_d[0] = cmp;
+        6'd3:  lg_d[1] = cmp;
+        6'd6, 6'd10, 6'd14, 6'd18: lc_d = lcy_q;
+        6'd8:  lg_d[2] = cmp;
+        6'd12: lg_d[3] = cmp;
+        6'd16: lg_d[4] = cmp;
+        6'd20: lg_d[5] = cmp;
+        default: ;
+      endcase
+    end
 
     // ---- per axis ----
     for (k = 0; k < NAXES; k = k + 1) begin
-      hit = a_hit && ({29'd0, ak} == k);
-      if (hit && wr && widx == W_ERR) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
-      if (hit && rd && widx == W_POS_LO) poshi_d[k*PHW +: PHW] = pos_up[k*PHW +: PHW];
+      hit = rq_hit_q[k];
+      if (hit && wr && rq_err_q) errf_d[k*3 +: 3] = errf_q[k*3 +: 3] & ~wdat[2:0];
+      if (hit && rd && rq_plo_q) poshi_d[k*PHW +: PHW] = pos_up[k*PHW +: PHW];
       for (i = 0; i < NC; i = i + 1)
         if (pcfg_q[k*NC+i])
           cfg_d[(k*NC+i)*32 +: 32] = odat_q;
@@ -651,7 +722,7 @@ module hexstep_wb #(
         end else if (ocnt_q == 6'd1) begin
           m_we[mw_bank] = 1'b1;
           m_waddr = {oax_q, mw_word};
-          m_wdata = odat_q;
+          m_wdata = mg;
         end
       end
       OP_PUSH: begin
@@ -717,7 +788,7 @@ module hexstep_wb #(
   end
   always @(posedge clk_i) begin
     if (rst_i) begin
-      ack_q <= 1'b0;  dat_q <= 32'h0;  irq_q <= 1'b0;
+      ack_q <= 1'b0;  dat_q <= 32'h0;  rdk_q <= 1'b0;  irq_q <= 1'b0;
       es1_q <= 1'b0;  es2_q <= 1'b0;  estop_q <= 1'b0;
       abort_q <= {NAXES{1'b0}};
       errf_q <= {NAXES*3{1'b0}};
@@ -727,6 +798,7 @@ module hexstep_wb #(
       ocan_q <= 1'b0;
     end else begin
       ack_q <= ack_d;  dat_q <= dat_d;  irq_q <= irq_d;
+      rdk_q <= idle ? !wb_we_i : (op_q == OP_SRD || op_q == OP_CRD);
       es1_q <= estop_i;  es2_q <= es1_q;  estop_q <= estop_d;
       abort_q <= abort_cmd_d | {NAXES{estop_d}};
       errf_q <= errf_d;
@@ -753,15 +825,16 @@ module hexstep_wb #(
   always @(posedge clk_i) begin
     odat_q <= odat_d;  osel_q <= osel_d;  otail_q <= otail_d;
     if (data_cyc) rdqn_q <= ~bus_rdata_i;
+    lcv_q <= (op_q == OP_PUSH) && proc_cyc && !lz0_q;  lcs_q <= lst_q;  lcy_q <= ccy;
     lh_q <= lh_d;  lc_q <= lc_d;  lz_q <= lz_d;  lg_q <= lg_d;  ljog_q <= ljog_d;  ldir_q <= ldir_d;
   end
 
   assign wb_ack_o = ack_q;
-  assign wb_dat_o = dat_q;
+  assign wb_dat_o = dat_q & {32{ack_q & rdk_q}};
   assign irq_o    = irq_q;
   // START and STOP: strobes at the request's edge; ABORT: a registered strobe for the next.
-  assign start_w_o = (wr && g_hit && widx == G_START) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
-  assign stop_w_o  = (wr && g_hit && widx == G_STOP) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign start_w_o = (wr && rq_gw_q[G_START[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign stop_w_o  = (wr && rq_gw_q[G_STOP[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
   assign abort_o   = abort_q;
   assign push_o       = pcommit_q;
   assign push_axis_o  = oax_q;

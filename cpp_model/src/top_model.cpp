@@ -37,7 +37,7 @@ TopModel::TopModel(unsigned naxes, const Widths& w) : naxes_(naxes), w_(w) {
 
 void TopModel::reset() {
   n_ = 0;
-  ack_q_ = irq_q_ = false;
+  ack_q_ = irq_q_ = cap_q_ = false;
   dat_q_ = 0;
   es1_ = es2_ = estop_ = false;
   abort_cmd_ = start_pend_ = stop_pend_ = frame_start_ = frame_stop_ = 0;
@@ -126,7 +126,11 @@ void TopModel::tick(const WbPins& in) {
   // ================= decisions, from the state before this edge =================
 
   // ---- hexstep_wb.v: request decode ----
-  const bool req = in.cyc && in.stb && !ack_q_ && op_.kind == Op::kNone;
+  // A request seen in one cycle (while idle and not acking) is taken at its edge and acted on
+  // at the next (hexstep_wb.v: cap_q, the decodes registered a cycle ahead); the master holds
+  // it until the ack.
+  const bool take = in.cyc && in.stb && !ack_q_ && op_.kind == Op::kNone && !cap_q_;
+  const bool req = cap_q_ && in.cyc && in.stb;
   const bool wr = req && in.we;
   const bool rd = req && !in.we;
   uint32_t bmask = 0;
@@ -462,6 +466,7 @@ void TopModel::tick(const WbPins& in) {
   op_ = op_n;
   ack_q_ = ack_n;
   dat_q_ = dat_n;
+  cap_q_ = take;
   ++n_;
 }
 
@@ -484,7 +489,7 @@ uint64_t count_mod(uint64_t from, uint64_t to, uint64_t r) {
 
 uint64_t TopModel::quiet_cycles(const WbPins& in) const {
   if (in.cyc && in.stb) return 0;
-  if (op_.kind != Op::kNone || ack_q_ || dat_q_ != 0) return 0;
+  if (op_.kind != Op::kNone || ack_q_ || cap_q_ || dat_q_ != 0) return 0;
   if (abort_cmd_ || estop_ || es1_ != in.estop || es2_ != in.estop) return 0;
   if (start_pend_ || stop_pend_ || frame_start_ || frame_stop_) return 0;
   if (irq_q_ != ((pend_ & irq_en_) != 0)) return 0;

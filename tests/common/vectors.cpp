@@ -288,7 +288,8 @@ NamedJob random_job(std::mt19937_64& rng, unsigned moves_per_axis, bool raw_too)
 }
 
 uint64_t start_frame(uint64_t request_cycle) {
-  uint64_t b = request_cycle + 1;
+  // The first frame boundary after the edge that acts on it (the one ending r + kTakeCycles).
+  uint64_t b = request_cycle + kTakeCycles + 1;
   while (b % kFrameCycles != kBoundaryCycle) ++b;
   return b + (kFrameCycles - kBoundaryCycle);
 }

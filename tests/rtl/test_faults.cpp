@@ -153,6 +153,7 @@ bool run_to(Bench& b, unsigned k, When w, unsigned extra) {
 // A request acted on at the very next edge (the bus is idle between the test's accesses).
 void write_now(Bench& b, uint32_t adr, uint32_t dat) {
   b.bus.drive(true, true, true, adr, dat, 0xF);
+  for (unsigned i = 0; i < kTakeCycles; ++i) b.bus.tick();  // taken
   b.bus.tick();  // acted on here
   b.bus.tick();  // the ack cycle
   b.bus.drive(false, false, false, 0, 0, 0);
@@ -255,7 +256,8 @@ TEST(Faults, AbortInEveryPhaseThenNewMove) {
       b.idle(30);
       ASSERT_TRUE(run_to(b, k, w, extra)) << "never reached " << when_name(w);
       b.push(k, trapezoid(20));  // queued behind: must be flushed
-      const uint64_t abort_edge = b.cycle() + 1;  // request edge b.cycle(), strobe on the next
+      // Request edge b.cycle() + kTakeCycles, strobe on the next.
+      const uint64_t abort_edge = b.cycle() + kTakeCycles + 1;
       write_now(b, R::ABORT, 1u << k);
       EXPECT_FALSE(b.m().busy(k) && b.m().gen(k).run()) << "generator running after the abort edge";
       b.idle(400);
@@ -320,23 +322,21 @@ TEST(Faults, StopCombinedWithAbort) {
   write_now(b, R::STOP, 1u << 2);
   ASSERT_TRUE(b.run_until([&] { return b.m().gen(2).stopping(); }, 200));
   b.idle(40);
-  uint64_t abort_edge = b.cycle() + 1;
+  uint64_t abort_edge = b.cycle() + kTakeCycles + 1;
   write_now(b, R::ABORT, 1u << 2);
   b.idle(300);
   for (uint64_t c : rs.at[2]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort";
   EXPECT_FALSE(b.m().busy(2));
   // ABORT and STOP on the same edge: abort.
   ASSERT_TRUE(run_to(b, 2, When::Accel, 2));
-  abort_edge = b.cycle() + 1;
   b.bus.drive(true, true, true, R::STOP, 1u << 2, 0xF);
-  b.bus.tick();
-  b.bus.tick();
-  b.bus.drive(true, true, true, R::ABORT, 1u << 2, 0xF);  // the strobe: within the same frame
-  b.bus.tick();
-  b.bus.tick();
+  for (unsigned i = 0; i < kTakeCycles + 2; ++i) b.bus.tick();
+  abort_edge = b.cycle() + kTakeCycles + 1;  // the strobe: within the same frame
+  b.bus.drive(true, true, true, R::ABORT, 1u << 2, 0xF);
+  for (unsigned i = 0; i < kTakeCycles + 2; ++i) b.bus.tick();
   b.bus.drive(false, false, false, 0, 0, 0);
   b.idle(300);
-  for (uint64_t c : rs.at[2]) EXPECT_LE(c, abort_edge + 2) << "STEP rose after the abort";
+  for (uint64_t c : rs.at[2]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort";
   EXPECT_FALSE(b.m().busy(2));
   new_move_runs(b, 2, "after stop and abort");
   bg.finish("stop/abort");

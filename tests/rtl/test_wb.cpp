@@ -187,16 +187,18 @@ TEST(Wb, UnmappedReadsZeroAndAck) {
 }
 
 // The ack timing of docs/ARCHITECTURE.md ("Bus interface"), for requests in every phase of
-// the 4-cycle slot: flip-flop registers ack in the cycle after the request edge; staging and
-// configuration reads wait for the next bus cycle b (cycle 4i+3, the first after the decode
-// cycle that follows the request edge) and ack on edge b+2, writes on b+4; CMD.push on b+100.
-// After reset, requests wait for the initialization (32 * NAXES cycles).
+// the 4-cycle slot: a request is taken at the edge ending its first cycle r and acted on at the
+// edge ending r + kTakeCycles (the request edge); flip-flop registers ack in the cycle after
+// the request edge; staging and configuration reads wait for the next bus cycle b (cycle 4i+3,
+// the first after the decode cycle that follows the request edge) and ack on edge b+2, writes
+// on b+4; CMD.push on b+100. After reset, requests wait for the initialization (32 * NAXES
+// cycles).
 TEST(Wb, AckTiming) {
   Bench b(5);
   // Reset: a request from cycle 0 on is acted on once the initialization is over.
   {
     const uint64_t n = edges_to_ack(b, false, R::ID);
-    EXPECT_EQ(n, uint64_t(kFrameCycles) * RtlTop::rtl_naxes() + 1) << "first ack after reset";
+    EXPECT_EQ(n, uint64_t(kFrameCycles) * RtlTop::rtl_naxes() + 1 + kTakeCycles) << "first ack after reset";
   }
   for (unsigned phase = 0; phase < kSlotCycles; ++phase) {
     SCOPED_TRACE("request in slot cycle " + std::to_string(phase));
@@ -205,27 +207,27 @@ TEST(Wb, AckTiming) {
       while (b.cycle() % kSlotCycles != phase) b.idle(1);
     };
     align();
-    EXPECT_EQ(edges_to_ack(b, false, R::IRQ_ENABLE), 1u);
+    EXPECT_EQ(edges_to_ack(b, false, R::IRQ_ENABLE), 1u + kTakeCycles);
     align();
-    EXPECT_EQ(edges_to_ack(b, true, R::IRQ_ENABLE, 0), 1u);
+    EXPECT_EQ(edges_to_ack(b, true, R::IRQ_ENABLE, 0), 1u + kTakeCycles);
     align();
-    EXPECT_EQ(edges_to_ack(b, false, ax_reg(2, A::STATUS)), 1u);
+    EXPECT_EQ(edges_to_ack(b, false, ax_reg(2, A::STATUS)), 1u + kTakeCycles);
     align();
-    EXPECT_EQ(edges_to_ack(b, true, ax_reg(2, A::CMD), 0), 1u) << "CMD without push";
+    EXPECT_EQ(edges_to_ack(b, true, ax_reg(2, A::CMD), 0), 1u + kTakeCycles) << "CMD without push";
     align();
-    EXPECT_EQ(edges_to_ack(b, false, 0x800), 1u) << "unmapped";
+    EXPECT_EQ(edges_to_ack(b, false, 0x800), 1u + kTakeCycles) << "unmapped";
     for (uint32_t reg : {A::STEPS, A::DEC_FRAC, A::STEP_HIGH, A::POLARITY}) {
       align();
-      uint64_t r = b.cycle(), bc = next_bus_cycle_after(r);
+      uint64_t r = b.cycle(), bc = next_bus_cycle_after(r + kTakeCycles);
       EXPECT_EQ(edges_to_ack(b, false, ax_reg(4, reg)), bc + 2 - r + 1) << "read 0x" << std::hex << reg;
       align();
       r = b.cycle();
-      bc = next_bus_cycle_after(r);
+      bc = next_bus_cycle_after(r + kTakeCycles);
       EXPECT_EQ(edges_to_ack(b, true, ax_reg(4, reg), reg == A::STEP_HIGH ? 1 : 0), bc + 4 - r + 1)
           << "write 0x" << std::hex << reg;
     }
     align();
-    const uint64_t r = b.cycle(), bc = next_bus_cycle_after(r);
+    const uint64_t r = b.cycle(), bc = next_bus_cycle_after(r + kTakeCycles);
     EXPECT_EQ(edges_to_ack(b, true, ax_reg(phase, A::CMD), A::CMD_PUSH_MASK), bc + 100 - r + 1) << "push";
   }
   EXPECT_EQ(b.problems(), "");
@@ -249,9 +251,14 @@ TEST(Wb, AckProtocol) {
   b.bus.drive(false, false, false, 0, 0, 0);
   b.bus.tick();
   EXPECT_EQ(b.axr(0, A::STEPS), 0u);
-  // A register read: ack one edge after the request, one cycle long, the data with it.
+  // A register read: taken at the request's first edge, acted on at the next, acked after it,
+  // one cycle long, the data with it.
   b.bus.drive(true, true, false, R::ID, 0, 0xF);
   EXPECT_FALSE(b.mon.ack());
+  for (unsigned i = 0; i < kTakeCycles; ++i) {
+    b.bus.tick();
+    EXPECT_FALSE(b.mon.ack());
+  }
   b.bus.tick();
   EXPECT_TRUE(b.mon.ack());
   EXPECT_EQ(b.mon.dat(), R::ID_RESET);
@@ -513,7 +520,8 @@ TEST(Wb, AbortStopsAndFlushes) {
   b.idle(3001);
   EXPECT_NE(b.status(0) & A::STATUS_BUSY_MASK, 0u);
   b.write(R::ABORT, 1u);
-  const uint64_t abort_edge = b.bus.last_request_cycle() + 1;  // the strobe acts on the next edge
+  // The write acts at the edge ending last_request_cycle + kTakeCycles, the strobe at the next.
+  const uint64_t abort_edge = b.bus.last_request_cycle() + kTakeCycles + 1;
   b.idle(200);
   for (uint64_t c : rs.at[0]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort edge";
   const uint32_t s = b.status(0);
@@ -625,10 +633,9 @@ TEST(Wb, InterruptsSetAndClear) {
   b.push(3, cruise(2, kQuarter));
   b.write(R::START, 1u << 3);
   const uint64_t pop = start_frame(b.bus.last_request_cycle()) + kSlotCycles * 3 - 1;
-  while (b.cycle() < pop) b.bus.tick();
+  while (b.cycle() < pop - kTakeCycles) b.bus.tick();
   b.bus.drive(true, true, true, R::IRQ_PENDING, 0xFFFFFFFFu, 0xF);  // acted on at the edge ending `pop`
-  b.bus.tick();
-  b.bus.tick();
+  for (unsigned i = 0; i < kTakeCycles + 2; ++i) b.bus.tick();
   b.bus.drive(false, false, false, 0, 0, 0);
   EXPECT_EQ(b.read(R::IRQ_PENDING) & (1u << (R::IRQ_PENDING_SLOT_SHIFT + 3)), 1u << (R::IRQ_PENDING_SLOT_SHIFT + 3));
   EXPECT_EQ(b.problems(), "");

@@ -115,6 +115,7 @@ class TopModel {
   Widths w_;
   uint64_t n_ = 0;
   bool ack_q_ = false, irq_q_ = false;
+  bool cap_q_ = false;  // a request was taken at the last edge: act on it at this one
   uint32_t dat_q_ = 0;
   bool es1_ = false, es2_ = false, estop_ = false;
   uint32_t abort_cmd_ = 0, start_pend_ = 0, stop_pend_ = 0, frame_start_ = 0, frame_stop_ = 0;
