@@ -41,8 +41,8 @@
 // falling SCK edge that starts D[31:24], 17 SCK half periods after the rising edge of bit 32
 // (at least 68 clk_i cycles at the fastest SCK). A read acked later is late: its data bytes are
 // not valid, RCRC is sent inverted (it never matches), and the next STATUS says rejected; the
-// host repeats the read. With hexstep_top (a register read acks in 1 cycle, a staging or
-// configuration read in at most 8) no read is late; its slowest access, CMD.push (about 105
+// host repeats the read. With hexstep_top (a register read acks in 2 cycles, a staging or
+// configuration read in at most 9) no read is late; its slowest access, CMD.push (about 106
 // cycles), and the initialization after reset (32 * NAXES cycles) end before the next frame can
 // issue a request (at least 260 cycles at the fastest SCK). Reset: synchronous, active high;
 // every register is reset.
