@@ -21,7 +21,7 @@
  * ticks (one tick of every axis per frame of 32 clock cycles); START and STOP act at the next
  * frame boundary, ABORT on the next edge. Staging and pulse-configuration accesses wait for the
  * core's memory (a few cycles) and CMD.push is acked only when the move is in the queue (about
- * 105 cycles): the bus stalls meanwhile, no call needs to poll for it.
+ * 106 cycles): the bus stalls meanwhile, no call needs to poll for it.
  *
  * Concurrency: the driver keeps no state but the handle; calls on one device must not race
  * (e.g. from an interrupt handler and the main loop) unless the caller serialises them.

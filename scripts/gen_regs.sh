@@ -24,8 +24,9 @@ trap 'rm -rf "$tmp"' EXIT
   echo "# hexstep registers"
   echo
   echo "Wishbone B4 classic slave, 32-bit data, byte addresses; every request is acked once"
-  echo "(registered ack): registers in flip-flops one cycle after the request, the memory-backed"
-  echo "staging and pulse configuration words after 3 to 8 cycles, CMD.push after about 105;"
+  echo "(registered ack, counted in cycles from the request's first cycle): registers in"
+  echo "flip-flops after 2 cycles, the memory-backed staging and pulse configuration words after"
+  echo "6 to 9 (reads) or 8 to 11 (writes), CMD.push after about 106;"
   echo "there is no err and no stall signal. Unmapped addresses read 0. See docs/ARCHITECTURE.md"
   echo "(\"Bus interface\", \"Moves, queue and chaining\") for the bus and queue behaviour."
   echo

@@ -487,7 +487,7 @@ TEST(Wb, StopFromEveryPhase) {
 }
 
 // A flush of the queue while a push loads drops the push: STOP written just before a push
-// flushes at the next frame boundary, in the middle of the push's ~105 cycles.
+// flushes at the next frame boundary, in the middle of the push's ~106 cycles.
 TEST(Wb, FlushDuringAPushDropsIt) {
   Bench b(21);
   b.push(3, cruise(400, kQuarter));

@@ -191,7 +191,7 @@ TEST(Spi, WriteReadbackByteEnablesAndTiming) {
   EXPECT_EQ(dut.mismatches(), 0u) << dut.report();
 }
 
-// Moves staged and pushed over SPI at the fastest SCK (CMD.push acks ~105 cycles after its
+// Moves staged and pushed over SPI at the fastest SCK (CMD.push acks ~106 cycles after its
 // request, within the gap to the next frame) and started there: every push executed, the moves
 // run on the pins exactly as the model runs them, positions read back over SPI.
 TEST(Spi, MovesOverSpiMatchTheModel) {
@@ -204,7 +204,7 @@ TEST(Spi, MovesOverSpiMatchTheModel) {
   push_move(bus, 1, cruise(10, 1ull << 62));
   push_move(bus, 4, b);
   EXPECT_EQ(m.status(), spi::kStatusOk) << "the last push was executed";
-  for (int i = 0; i < 200; ++i) dut.tick();  // its ack comes about 105 cycles after CS_N rose
+  for (int i = 0; i < 200; ++i) dut.tick();  // its ack comes about 106 cycles after CS_N rose
   EXPECT_EQ(dut.model.queued(1), 2u);
   EXPECT_EQ(dut.model.queued(4), 1u);
   m.write(R::START, 0x12u);
