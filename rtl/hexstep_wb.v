@@ -314,15 +314,17 @@ module hexstep_wb #(
   reg  [31:0]    r_pos;
   reg  [PHW-1:0] r_poshi;
   integer        m;
+  // An OR over the axes of each axis's fields masked by its one-hot select (rq_hit_q): a
+  // balanced tree, not a chain of priority selects.
   always @* begin
     r_status = 6'd0; r_err = 3'd0; r_pos = 32'd0; r_poshi = {PHW{1'b0}};
-    for (m = 0; m < NAXES; m = m + 1)
-      if (rq_hit_q[m]) begin
-        r_status = {2'd2 - qn_i[m*2 +: 2], run_i[m], phase_i[m*2 +: 2], busy_i[m]};
-        r_err = errf_q[m*3 +: 3];
-        r_pos = pos_lo[m*32 +: 32];
-        r_poshi = poshi_q[m*PHW +: PHW];
-      end
+    for (m = 0; m < NAXES; m = m + 1) begin
+      r_status = r_status | ({6{rq_hit_q[m]}} &
+                             {2'd2 - qn_i[m*2 +: 2], run_i[m], phase_i[m*2 +: 2], busy_i[m]});
+      r_err = r_err | ({3{rq_hit_q[m]}} & errf_q[m*3 +: 3]);
+      r_pos = r_pos | ({32{rq_hit_q[m]}} & pos_lo[m*32 +: 32]);
+      r_poshi = r_poshi | ({PHW{rq_hit_q[m]}} & poshi_q[m*PHW +: PHW]);
+    end
   end
   wire [31:0] r_hi;
   generate
@@ -336,10 +338,9 @@ module hexstep_wb #(
       assign r_hi = {32{r_poshi[0]}};
     end
   endgenerate
-  wire [31:0] ard = rq_ast_q ? {26'd0, r_status} :
-                    rq_err_q ? {29'd0, r_err} :
-                    rq_plo_q ? r_pos :
-                    rq_phi_q ? r_hi : 32'h0;
+  // The words by their one-hot selects (at most one of rq_ast_q .. rq_phi_q is set).
+  wire [31:0] ard = ({32{rq_ast_q}} & {26'd0, r_status}) | ({32{rq_err_q}} & {29'd0, r_err}) |
+                    ({32{rq_plo_q}} & r_pos) | ({32{rq_phi_q}} & r_hi);
   // The flip-flop registers' read data at the registered decodes of the request, whatever the
   // request: dat_q takes it on every cycle that does not ack a memory read, so that the
   // request decode (idle, cyc, stb) is not on the read data's path. wb_dat_o shows it only
