@@ -287,6 +287,8 @@ NamedJob random_job(std::mt19937_64& rng, unsigned moves_per_axis, bool raw_too)
   return j;
 }
 
+uint64_t abort_edge(uint64_t request_cycle) { return request_cycle + kTakeCycles + 1; }
+
 uint64_t start_frame(uint64_t request_cycle) {
   // The first frame boundary after the edge that acts on it (the one ending r + kTakeCycles).
   uint64_t b = request_cycle + kTakeCycles + 1;

@@ -256,12 +256,11 @@ TEST(Faults, AbortInEveryPhaseThenNewMove) {
       b.idle(30);
       ASSERT_TRUE(run_to(b, k, w, extra)) << "never reached " << when_name(w);
       b.push(k, trapezoid(20));  // queued behind: must be flushed
-      // Request edge b.cycle() + kTakeCycles, strobe on the next.
-      const uint64_t abort_edge = b.cycle() + kTakeCycles + 1;
+      const uint64_t stop_edge = abort_edge(b.cycle());
       write_now(b, R::ABORT, 1u << k);
       EXPECT_FALSE(b.m().busy(k) && b.m().gen(k).run()) << "generator running after the abort edge";
       b.idle(400);
-      for (uint64_t c : rs.at[k]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort edge";
+      for (uint64_t c : rs.at[k]) EXPECT_LE(c, stop_edge) << "STEP rose after the abort edge";
       EXPECT_FALSE(b.m().pulse(k).step_level());  // a pulse high at the abort completed
       EXPECT_EQ(b.free_slots(k), 2u) << "queue flushed";
       EXPECT_EQ(b.position(k), rs.pos[k]);
@@ -322,21 +321,18 @@ TEST(Faults, StopCombinedWithAbort) {
   write_now(b, R::STOP, 1u << 2);
   ASSERT_TRUE(b.run_until([&] { return b.m().gen(2).stopping(); }, 200));
   b.idle(40);
-  uint64_t abort_edge = b.cycle() + kTakeCycles + 1;
+  uint64_t stop_edge = abort_edge(b.cycle());
   write_now(b, R::ABORT, 1u << 2);
   b.idle(300);
-  for (uint64_t c : rs.at[2]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort";
+  for (uint64_t c : rs.at[2]) EXPECT_LE(c, stop_edge) << "STEP rose after the abort";
   EXPECT_FALSE(b.m().busy(2));
   // ABORT and STOP on the same edge: abort.
   ASSERT_TRUE(run_to(b, 2, When::Accel, 2));
-  b.bus.drive(true, true, true, R::STOP, 1u << 2, 0xF);
-  for (unsigned i = 0; i < kTakeCycles + 2; ++i) b.bus.tick();
-  abort_edge = b.cycle() + kTakeCycles + 1;  // the strobe: within the same frame
-  b.bus.drive(true, true, true, R::ABORT, 1u << 2, 0xF);
-  for (unsigned i = 0; i < kTakeCycles + 2; ++i) b.bus.tick();
-  b.bus.drive(false, false, false, 0, 0, 0);
+  write_now(b, R::STOP, 1u << 2);
+  stop_edge = abort_edge(b.cycle());  // the ABORT right behind it: within the same frame
+  write_now(b, R::ABORT, 1u << 2);
   b.idle(300);
-  for (uint64_t c : rs.at[2]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort";
+  for (uint64_t c : rs.at[2]) EXPECT_LE(c, stop_edge) << "STEP rose after the abort";
   EXPECT_FALSE(b.m().busy(2));
   new_move_runs(b, 2, "after stop and abort");
   bg.finish("stop/abort");

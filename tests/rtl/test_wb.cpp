@@ -520,10 +520,9 @@ TEST(Wb, AbortStopsAndFlushes) {
   b.idle(3001);
   EXPECT_NE(b.status(0) & A::STATUS_BUSY_MASK, 0u);
   b.write(R::ABORT, 1u);
-  // The write acts at the edge ending last_request_cycle + kTakeCycles, the strobe at the next.
-  const uint64_t abort_edge = b.bus.last_request_cycle() + kTakeCycles + 1;
+  const uint64_t stop_edge = abort_edge(b.bus.last_request_cycle());
   b.idle(200);
-  for (uint64_t c : rs.at[0]) EXPECT_LE(c, abort_edge) << "STEP rose after the abort edge";
+  for (uint64_t c : rs.at[0]) EXPECT_LE(c, stop_edge) << "STEP rose after the abort edge";
   const uint32_t s = b.status(0);
   EXPECT_EQ(s & (A::STATUS_BUSY_MASK | A::STATUS_RUN_MASK), 0u);
   EXPECT_EQ((s & A::STATUS_FREE_MASK) >> A::STATUS_FREE_SHIFT, 2u);
