@@ -159,10 +159,14 @@ module hexstep_wb_fv #(
   // Latency (docs/ARCHITECTURE.md, bus interface): a request is taken at the edge ending its
   // first cycle and accepted at the next; an operation accepted at the edge ending cycle c
   // starts at the first bus cycle b >= c + 2 (b <= c + 5); the longest is CMD.push, acked on
-  // the edge b + 100, so in cycle b + 101: at most 107 cycles after the request's first cycle.
-  // A request that came while the memory initialization ran waits for it too (8 * NAXES bus
-  // cycles from reset).
-  localparam integer ACK_MAX = 107;
+  // the edge b + 100, so in cycle b + 101: at most 106 + TAKE = 107 cycles after the request's
+  // first cycle. A request that came while the memory initialization ran waits for it too
+  // (8 * NAXES bus cycles from reset). TAKE: the cycle in which a request is taken before it
+  // is acted on (kTakeCycles in cpp_model/include/hexstep/widths.hpp); every bound from the
+  // request's first cycle below counts it once.
+  localparam integer TAKE = 1;
+  localparam [8:0]   TK = TAKE;
+  localparam integer ACK_MAX = 106 + TAKE;
   localparam integer ACK_MAX_INIT = 32 * NAXES + 5 + ACK_MAX;
   (* keep *) wire [2:0] f_op, f_oax;     // u_dut.op_q, u_dut.oax_q (connected by the .sby)
   reg [8:0] f_wait;                 // cycles the current request has waited for its ack
@@ -352,22 +356,22 @@ module hexstep_wb_fv #(
     // In idle a request is taken (f_cap) at its first edge once the initialization is over, and
     // accepted at the next.
     if (f_op == OP_IDLE && cs && !ack)
-      assert (f_cap ? (f_wait >= 9'd1 && f_wait <= f_base + 1 && (!f_post || f_wait == 9'd1))
+      assert (f_cap ? (f_wait >= TK && f_wait <= f_base + TK && (!f_post || f_wait == TK))
                     : (f_wait <= f_base && (!f_post || f_wait == 9'd0)));
     if (f_cap) assert (cs && !ack && f_op == OP_IDLE && f_rq_ok);
     if (f_busy_op) begin
       // Before the first bus cycle: accepted at most kc + 2 cycles ago (at a bus cycle: armed
       // at the edge before, or accepted at that edge and not armed).
-      if (f_preiss) assert ((kc == 2'd3 ? (f_arm ? f_wait <= f_base + 6 : f_wait == f_base + 2)
-                                        : f_wait <= f_base + f_kc + 3) && f_wait >= 9'd2);
+      if (f_preiss) assert ((kc == 2'd3 ? (f_arm ? f_wait <= f_base + 5 + TK : f_wait == f_base + 1 + TK)
+                                        : f_wait <= f_base + f_kc + 2 + TK) && f_wait >= 1 + TK);
       else assert (f_arm);
       if (f_op != OP_PUSH && f_oiss) begin
-        assert (f_wait <= f_base + f_kc + 7);
+        assert (f_wait <= f_base + f_kc + 6 + TK);
         if (f_ocnt == 6'd0) assert (kc <= 2'd1);
         else assert (kc >= 2'd2);
       end
       if (f_op == OP_PUSH && f_ocnt != 6'd0)
-        assert (f_wait <= f_base + 4 * {3'd0, f_ocnt} + 3 + f_kc);
+        assert (f_wait <= f_base + 4 * {3'd0, f_ocnt} + 2 + TK + f_kc);
     end
   end
 

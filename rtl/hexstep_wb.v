@@ -204,51 +204,46 @@ module hexstep_wb #(
   // bus, whose data and byte enables are read directly (asserted in hexstep_wb_fv:
   // fv_rq_ok). Every decision of the request therefore starts at flip-flops.
   reg              cap_q;                     // the request on the bus was taken: act on it
-  reg              rq_we_q;                   // its decodes (loaded on every cycle)
-  reg              rq_stg_q, rq_cfg_q;        // a staging / configuration word of an axis
-  reg  [7:0]       rq_gw_q;                   // global word i (0..7)
-  reg              rq_cmd_q, rq_err_q, rq_plo_q;   // CMD, ERR, POS_LO of an axis
-  reg              rq_ast_q, rq_phi_q;        // STATUS, POS_HI of an axis
-  reg              rq_gr_q;                   // global word 0..15 (read data: gwords)
-  reg  [3:0]       rq_gidx_q;                 // its number
-  reg  [NAXES-1:0] rq_hit_q;                  // the axis (one-hot)
+  // The decodes of the request on the bus (rq_d) and their register (rq_q, loaded on every
+  // cycle), one vector, named by the slices below.
+  localparam integer RQ_W = 21 + NAXES;
+  reg  [RQ_W-1:0]  rq_d, rq_q;
+  integer          rqk;
+  always @* begin
+    rq_d[0] = wb_we_i;                                  // a write
+    rq_d[1] = a_hit && w_stg;                           // a staging word of an axis
+    rq_d[2] = a_hit && w_cfg;                           // a configuration word of an axis
+    for (rqk = 0; rqk < 8; rqk = rqk + 1)               // global word i (0..7)
+      rq_d[3 + rqk] = g_hit && ({27'd0, widx} == rqk);
+    rq_d[11] = a_hit && (widx == W_CMD);                // CMD, ERR, POS_LO, STATUS, POS_HI
+    rq_d[12] = a_hit && (widx == W_ERR);                //   of an axis
+    rq_d[13] = a_hit && (widx == W_POS_LO);
+    rq_d[14] = a_hit && (widx == W_STATUS);
+    rq_d[15] = a_hit && (widx == W_POS_HI);
+    rq_d[16] = g_hit && !widx[4];                       // global word 0..15 (read data: gwords)
+    rq_d[20:17] = widx[3:0];                            // ... its number
+    for (rqk = 0; rqk < NAXES; rqk = rqk + 1)           // the axis (one-hot)
+      rq_d[21 + rqk] = a_hit && ({29'd0, ak} == rqk);
+  end
+  wire             rq_we_q = rq_q[0];
+  wire             rq_stg_q = rq_q[1], rq_cfg_q = rq_q[2];
+  wire [7:0]       rq_gw_q = rq_q[10:3];
+  wire             rq_cmd_q = rq_q[11], rq_err_q = rq_q[12], rq_plo_q = rq_q[13];
+  wire             rq_ast_q = rq_q[14], rq_phi_q = rq_q[15];
+  wire             rq_gr_q = rq_q[16];
+  wire [3:0]       rq_gidx_q = rq_q[20:17];
+  wire [NAXES-1:0] rq_hit_q = rq_q[RQ_W-1:21];
   wire        take  = wb_cyc_i & wb_stb_i & ~ack_q & idle & ~cap_q;
   wire        req   = cap_q & wb_cyc_i & wb_stb_i;
   wire        wr    = req & rq_we_q;
   wire        rd    = req & ~rq_we_q;
-  integer     rqk;
   always @(posedge clk_i) begin
     cap_q <= !rst_i && take;
-    rq_we_q <= wb_we_i;
-    rq_stg_q <= a_hit && w_stg;
-    rq_cfg_q <= a_hit && w_cfg;
-    for (rqk = 0; rqk < 8; rqk = rqk + 1) rq_gw_q[rqk] <= g_hit && ({27'd0, widx} == rqk);
-    rq_cmd_q <= a_hit && (widx == W_CMD);
-    rq_err_q <= a_hit && (widx == W_ERR);
-    rq_plo_q <= a_hit && (widx == W_POS_LO);
-    rq_ast_q <= a_hit && (widx == W_STATUS);
-    rq_phi_q <= a_hit && (widx == W_POS_HI);
-    rq_gr_q <= g_hit && !widx[4];
-    rq_gidx_q <= widx[3:0];
-    for (rqk = 0; rqk < NAXES; rqk = rqk + 1) rq_hit_q[rqk] <= a_hit && ({29'd0, ak} == rqk);
+    rq_q <= rq_d;
   end
 `ifdef FORMAL
   // The registered decodes against those of the request on the bus (asserted while cap_q).
-  integer fvk;
-  reg     fv_hit_ok;
-  always @* begin
-    fv_hit_ok = 1'b1;
-    for (fvk = 0; fvk < NAXES; fvk = fvk + 1)
-      if (rq_hit_q[fvk] != (a_hit && ({29'd0, ak} == fvk))) fv_hit_ok = 1'b0;
-    for (fvk = 0; fvk < 8; fvk = fvk + 1)
-      if (rq_gw_q[fvk] != (g_hit && ({27'd0, widx} == fvk))) fv_hit_ok = 1'b0;
-  end
-  (* keep *) wire fv_rq_ok =
-      fv_hit_ok && rq_we_q == wb_we_i && rq_stg_q == (a_hit && w_stg) &&
-      rq_cfg_q == (a_hit && w_cfg) && rq_cmd_q == (a_hit && (widx == W_CMD)) &&
-      rq_err_q == (a_hit && (widx == W_ERR)) && rq_plo_q == (a_hit && (widx == W_POS_LO)) &&
-      rq_ast_q == (a_hit && (widx == W_STATUS)) && rq_phi_q == (a_hit && (widx == W_POS_HI)) &&
-      rq_gr_q == (g_hit && !widx[4]) && rq_gidx_q == widx[3:0];
+  (* keep *) wire fv_rq_ok = (rq_q == rq_d);
 `endif
   wire        bus_cyc = kph_i[3];
   wire        unused_kph = kph_i[0];           // (the commit cycle: the engine's)

@@ -23,12 +23,11 @@ trap 'rm -rf "$tmp"' EXIT
   echo
   echo "# hexstep registers"
   echo
-  echo "Wishbone B4 classic slave, 32-bit data, byte addresses; every request is acked once"
-  echo "(registered ack, counted in cycles from the request's first cycle): registers in"
-  echo "flip-flops after 2 cycles, the memory-backed staging and pulse configuration words after"
-  echo "6 to 9 (reads) or 8 to 11 (writes), CMD.push after about 106;"
-  echo "there is no err and no stall signal. Unmapped addresses read 0. See docs/ARCHITECTURE.md"
-  echo "(\"Bus interface\", \"Moves, queue and chaining\") for the bus and queue behaviour."
+  # The bus paragraph of the rdl's header comment (from "// Bus:" to the end of the comment),
+  # so that the ack times are written in one place.
+  sed -n '/^\/\/ Bus:/,/^[^/]/p' rdl/hexstep.rdl | sed -n 's|^// \{0,1\}||p'
+  echo "See docs/ARCHITECTURE.md (\"Bus interface\", \"Moves, queue and chaining\") for the bus"
+  echo "and queue behaviour."
   echo
   cat "$tmp/REGISTERS.md"; } > "$out/docs/REGISTERS.md"
 
