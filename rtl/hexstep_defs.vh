@@ -17,14 +17,3 @@ endfunction
 function [4:0] slot_word(input [1:0] s, input [2:0] off);
   slot_word = {s + 2'd1, off};
 endfunction
-// a + b + ci as one 32-bit carry chain with the carry in at its bottom ({carry out, sum});
-// written as a + b + ci, synthesis chains a second adder for the 1-bit operand.
-function [32:0] add_ci(input [31:0] a, input [31:0] b, input ci);
-  /* verilator lint_off UNUSEDSIGNAL */
-  reg [33:0] s;   // s[0] is the constant bottom bit
-  begin
-    s = {1'b0, a, 1'b1} + {1'b0, b, ci};
-    add_ci = s[33:1];
-  end
-  /* verilator lint_on UNUSEDSIGNAL */
-endfunction

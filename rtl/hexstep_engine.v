@@ -26,7 +26,7 @@
 //
 // Memory map (address = {axis, word}; slot s of the queue at words 8 + 8s + offset):
 //   bank 0: 0 S_lo, 1 S_hi, 2 steps-to-end;            3..7 staging;  slot: +0 V_START lo, +1 hi, +2 STEPS
-//   bank 1: 0 P_lo, 1 P_hi, 2 steps-to-acc_steps;      3..7 staging;  slot: +0 ACC_STEPS
+//   bank 1: 0 P_lo, 1 P_hi, 2 steps-to-acc_steps;      3..7 staging;  slot: +0 ACC_STEPS, +7 zero
 //   bank 2: 0 steps-to-dec_step;                       1..7 staging;  slot: +0 ACC lo, +1 hi, +2 ~DEC lo,
 //                                                                         +3 hi, +4 V_DEC lo, +5 hi, +6 DEC_STEP, +7 zero
 //   bank 3: 0..4 pulse configuration mirror;                          slot: +0 V_MAX lo, +1 hi, +2 FLOOR lo,
@@ -224,8 +224,8 @@ module hexstep_engine #(
   reg [2:0]  p2_ax;
   reg [1:0]  p2_ph, p2_frame;
   reg [6:0]  p2_fl;
-  reg        p3_we, p3_valid, p3_abort, p3_dir;
-  reg [NAXES-1:0] req_pre_q, tl_pre_q;
+  reg        p3_we, p3_valid, p3_dir;
+  reg [NAXES-1:0] req_pre_q, tl_pre_q, cm_pre_q;
   integer rk;
   reg [2:0]  p3_ax;
   // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
@@ -284,12 +284,33 @@ module hexstep_engine #(
   reg             dz_q [0:1];              // divisor zero
 
   // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
-  // p1_smask (t = 0 + V_DEC) and p1_cin (S + ~dec + 1) are registered with stage 1 at the
-  // sample, from the phase, first-decelerating-tick and stopping flags that stage 1 takes.
-  // A mask selects the other operand after the adder (0 + x = x, and the masked low half
-  // carries nothing into the high half: p1_smask excludes p1_cin), so the adders take the block
-  // RAM data without a LUT in front of their carry chains.
-  wire p1_pmask = p1_start;                                        // P starts at 0
+  // p1_smask (t = 0 + V_DEC) and p1_cin (S + ~dec + 1) are registered at the end of cycle 4i
+  // from stage 1's phase, first-decelerating-tick and stopping flags (not at the sample, so
+  // that the sample's decisions do not feed them). p1_smask selects the other operand after
+  // the adder (0 + x = x), so the adders take the block RAM data without a LUT in front of
+  // their carry chains; the carries ct0_q, ct1_q are not masked: with p1_smask the high half
+  // is masked too, and no decision of a first decelerating tick reads ct1_q (c_sell takes
+  // gt_q then; c_clamp and c_stop_end are for ACCEL and stopping). At a start P is 0 without a
+  // mask: bank 1 is read at the slot's zero word (offset 7, written 0 by every push), so
+  // P' = 0 + V_START, no carry, no step.
+
+  // a + b + ci ({carry out, sum}) with the carry out taken through one more sum bit,
+  // u ^ v ^ carry, where u and v are two flags that are both 1 in the cycle the sum is
+  // registered (kph_q[n] and a bit of g_q[1:0] that is 1 in slot cycle n, or its inverse).
+  // Synthesis cannot see that u ^ v is 0, so it keeps that bit's LUT at the end of the carry
+  // chain, with the carry on its I3, and packs the carry's flip-flop with it: the carry leaves
+  // the chain without a pass-out logic cell and a route to a flip-flop elsewhere (iCE40; about
+  // 1 ns of the HX8K's worst paths). The carry in is a constant-1 bottom bit beside ci, so that
+  // ci enters the same chain (written as a + b + ci, synthesis chains a second adder for it).
+  function [32:0] add_co(input [31:0] a, input [31:0] b, input ci, input u, input v);
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [34:0] t;   // t[0] is the constant bottom bit, t[34] unused
+    begin
+      t = {1'b0, u, a, 1'b1} + {1'b0, v, b, ci};
+      add_co = t[33:1];
+    end
+    /* verilator lint_on UNUSEDSIGNAL */
+  endfunction
 
   // The quotient bit of one restoring division step: 2*rem >= s.
   function dbit(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
@@ -344,8 +365,9 @@ module hexstep_engine #(
   // Limit > t, as the carry out of L + ~t (+ the carry of the low half).
   wire c_gt_lo, c_gt_hi;
   wire [31:0] unused_lo, unused_hi;
-  assign {c_gt_lo, unused_lo} = {1'b0, llo_q} + {1'b0, ~t_lo_q};
-  assign {c_gt_hi, unused_hi} = add_ci(lhi_q, ~t_hi_q, cl0_q);
+  // (Registered in cycles 4i+3 and 4i+4: add_co's flags of those cycles.)
+  assign {c_gt_lo, unused_lo} = add_co(llo_q, ~t_lo_q, 1'b0, kph_q[3], g_q[0]);
+  assign {c_gt_hi, unused_hi} = add_co(lhi_q, ~t_hi_q, cl0_q, kph_q[0], ~g_q[1]);
 
   // Stage-2 decisions (cycles 4i+5, 4i+6), from registers.
   reg        c_clamp, c_sell, c_stop_end, c_cnt_end, c_dec_trig, c_acc_end, c_ended;
@@ -383,7 +405,7 @@ module hexstep_engine #(
       2'd0: begin
         // Reads of the sampled axis: S (or V_START), P, addend, limit, low words.
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd0)} : {p1_ax, 5'd0};
-        ra1 = {p1_ax, 5'd0};
+        ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd7)} : {p1_ax, 5'd0};
         ra2 = {p1_ax, slot_word(p1_slot, a_off(p1_ph, p1_decf, p1_stop))};
         ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd2 : 3'd0)};
         re_e = p1_valid & p1_gen;
@@ -393,7 +415,7 @@ module hexstep_engine #(
       end
       2'd1: begin
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd1)} : {p1_ax, 5'd1};
-        ra1 = {p1_ax, 5'd1};
+        ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd7)} : {p1_ax, 5'd1};
         // High word of the addend: the next word, except the zero word (cruise) which serves both.
         ra2 = {p1_ax, slot_word(p1_slot, (a_off(p1_ph, p1_decf, p1_stop) == 3'd7) ? 3'd7 :
                                          a_off(p1_ph, p1_decf, p1_stop) + 3'd1)};
@@ -416,37 +438,37 @@ module hexstep_engine #(
     endcase
   end
 
-  // Datapath.
+  // Datapath (clock enables straight from the one-hot slot cycle kph_q).
   always @(posedge clk_i) begin
-    case (kc)
-      2'd2: begin  // low words of S, P, addend, limit (cycle 4i+2)
-        {cp0_q, pn_lo_q} <= p1_pmask ? {1'b0, rd0} : {1'b0, rd1} + {1'b0, rd0};
-        {ct0_q, t_lo_q} <= p1_smask ? {1'b0, rd2} : add_ci(rd0, rd2, p1_cin);
-        llo_q <= rd3;
-      end
-      2'd3: begin  // high words (cycle 4i+3)
-        {step_q, pn_hi_q} <= phi_sum;
-        {ct1_q, t_hi_q} <= p1_smask ? {1'b0, rd2} : add_ci(rd0, rd2, ct0_q);
-        cl0_q <= c_gt_lo;
-        lhi_q <= rd3;
-      end
-      2'd0: begin  // counters, compare high, deceleration point, division 1 (cycle 4i+4)
-        gt_q <= c_gt_hi;
-        re_n_q <= rd0 - {31'd0, step_q};
-        ra_n_q <= rd1 - {31'd0, step_q};
-        rd_n_q <= rd2 - {31'd0, step_q};
-        zre_q <= (rd0 == {31'd0, step_q});
-        zra_q <= (rd1 == {31'd0, step_q});
-        zrd_q <= (rd2 == {31'd0, step_q});
-        zrd0_q <= (rd2 == 32'd0);
-        dfh_q <= ~dfc_hc[17];
-        dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
-        dfl_q <= ~dfc_lc[17];
-      end
-      default: begin  // cycle 4i+5: select of S
-        sell_q <= c_sell;
-      end
-    endcase
+    if (kph_q[2]) begin  // low words of S, P, addend, limit (cycle 4i+2)
+      {cp0_q, pn_lo_q} <= plo_sum;
+      ct0_q <= s_lo_sum[32];
+      t_lo_q <= p1_smask ? rd2 : s_lo_sum[31:0];
+      llo_q <= rd3;
+    end
+    if (kph_q[3]) begin  // high words (cycle 4i+3)
+      {step_q, pn_hi_q} <= phi_sum;
+      ct1_q <= s_hi_sum[32];
+      t_hi_q <= p1_smask ? rd2 : s_hi_sum[31:0];
+      cl0_q <= c_gt_lo;
+      lhi_q <= rd3;
+    end
+    if (kph_q[0]) begin  // counters, compare high, deceleration point, division 1 (cycle 4i+4)
+      gt_q <= c_gt_hi;
+      re_n_q <= rd0 - {31'd0, step_q};
+      ra_n_q <= rd1 - {31'd0, step_q};
+      rd_n_q <= rd2 - {31'd0, step_q};
+      zre_q <= (rd0 == {31'd0, step_q});
+      zra_q <= (rd1 == {31'd0, step_q});
+      zrd_q <= (rd2 == {31'd0, step_q});
+      zrd0_q <= (rd2 == 32'd0);
+      dfh_q <= ~dfc_hc[17];
+      dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
+      dfl_q <= ~dfc_lc[17];
+    end
+    if (kph_q[1]) begin  // cycle 4i+5: select of S
+      sell_q <= c_sell;
+    end
     if (kph_q[3]) begin
       due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
       due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h1;
@@ -469,13 +491,15 @@ module hexstep_engine #(
       dq_q[1] <= {dq_q[1][2:0], dv1[0]};
     end
   end
-  wire [32:0] phi_sum = p1_pmask ? {1'b0, rd0} : add_ci(rd1, rd0, cp0_q);
+  wire [32:0] phi_sum = add_co(rd1, rd0, cp0_q, kph_q[3], g_q[0]);
+  wire [32:0] s_lo_sum = add_co(rd0, rd2, p1_cin, kph_q[2], g_q[1]);
+  wire [32:0] s_hi_sum = add_co(rd0, rd2, ct0_q, kph_q[3], g_q[0]);
+  wire [32:0] plo_sum = add_co(rd1, rd0, 1'b0, kph_q[2], g_q[1]);
 
   // ---------------------------------------------------------------------------------------
   // Control: next state of every axis.
   integer k;
   reg        cm, cm_ok, push_ok;
-  reg [2:0]  cj;
   reg [1:0]  qv, pos;
   reg [NS-1:0] flush, pop, consumed, refused, freed;
   reg [6:0]  req_due;
@@ -491,32 +515,35 @@ module hexstep_engine #(
     pos = 2'd0; sfk = {SF_W{1'b0}};
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
-    // an abort since the sample cancels it.
-    cm = p3_valid && kph_q[0];
-    cj = p3_ax;
-    cm_ok = cm && !p3_abort && !abort[cj];
-    if (cm) starting_d[cj] = 1'b0;
-    if (cm_ok) begin
-      if (d_consume) begin
-        consumed[cj] = 1'b1;
-        refused[cj] = d_bad;
-      end else if (d_gen) begin
-        // (The step request of this commit is req_pre_q.)
-        run_d[cj] = d_run;
-        ph_d[cj*2 +: 2] = d_ph;
-        decf_d[cj] = d_decf;
-        stop_d[cj] = d_stop;
-      end
-      // The move ended or was consumed: the next queued move chains if the axis runs and one
-      // is queued.
-      if (d_consume || (d_gen && d_ended)) begin
-        if (running_q[cj] && qn_q[cj*2 +: 2] != 2'd0) chain_d[cj] = 1'b1;
-        else running_d[cj] = 1'b0;
-      end
-      if (d_fstop && (d_gen ? d_run : run_q[cj])) begin
-        stop_d[cj] = 1'b1;
-        ph_d[cj*2 +: 2] = PH_DECEL;
-        decf_d[cj] = 1'b0;
+    // an abort since the sample cancels it. Per axis from its flag cm_pre_q (stage 3 is that
+    // axis's, not aborted), so that no decode of the stage's axis is on the state's enables.
+    for (k = 0; k < NAXES; k = k + 1) begin
+      cm = p3_valid && kph_q[0] && cm_pre_q[k];
+      cm_ok = cm && !abort[k];
+      // (An aborted stage's axis has starting clear already: the abort cleared it.)
+      if (cm) starting_d[k] = 1'b0;
+      if (cm_ok) begin
+        if (d_consume) begin
+          consumed[k] = 1'b1;
+          refused[k] = d_bad;
+        end else if (d_gen) begin
+          // (The step request of this commit is req_pre_q.)
+          run_d[k] = d_run;
+          ph_d[k*2 +: 2] = d_ph;
+          decf_d[k] = d_decf;
+          stop_d[k] = d_stop;
+        end
+        // The move ended or was consumed: the next queued move chains if the axis runs and
+        // one is queued.
+        if (d_consume || (d_gen && d_ended)) begin
+          if (running_q[k] && qn_q[k*2 +: 2] != 2'd0) chain_d[k] = 1'b1;
+          else running_d[k] = 1'b0;
+        end
+        if (d_fstop && (d_gen ? d_run : run_q[k])) begin
+          stop_d[k] = 1'b1;
+          ph_d[k*2 +: 2] = PH_DECEL;
+          decf_d[k] = 1'b0;
+        end
       end
     end
 
@@ -631,19 +658,20 @@ module hexstep_engine #(
       p1_gen <= s_gen; p1_fstop <= fstop_q[si]; p1_abort <= 1'b0;
       p1_ax <= si; p1_slot <= s_slot; p1_ph <= s_ph; p1_frame <= g_q[6:5] + {1'b0, (si == 3'd0)};
       p1_fl <= s_fl;
-      p1_smask <= (s_ph == PH_DECEL) & s_decf & ~s_stop;
-      p1_cin <= (s_ph == PH_DECEL) & ~(s_decf & ~s_stop);
       p2_start <= p1_start; p2_decf <= p1_decf; p2_stop <= p1_stop;
       p2_gen <= p1_gen; p2_fstop <= p1_fstop; p2_abort <= p1_abort | abort[p1_ax];
       p2_ax <= p1_ax; p2_ph <= p1_ph; p2_frame <= p1_frame; p2_fl <= p1_fl;
       p3_we <= p2_valid & p2_gen;
       p3_ax <= p2_ax;
-      p3_abort <= p2_abort | abort[p2_ax]; p3_dir <= p2_fl[F_DIR];
+      p3_dir <= p2_fl[F_DIR];
       // The step request of the coming commit, one flag per axis (d_* are from cycle 4i+5,
       // stage 2 becomes stage 3 here); an abort at the commit edge itself still cancels it.
       for (rk = 0; rk < NAXES; rk = rk + 1)
         req_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen && d_req
                          && ({29'd0, p2_ax} == rk);
+      // The commit's axis, one flag per axis (stage 3's, not aborted since the sample).
+      for (rk = 0; rk < NAXES; rk = rk + 1)
+        cm_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && ({29'd0, p2_ax} == rk);
       // The same for the DIR target load of a start (tgt_load_o).
       for (rk = 0; rk < NAXES; rk = rk + 1)
         tl_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && p2_start
@@ -651,6 +679,11 @@ module hexstep_engine #(
     end else begin
       p1_abort <= p1_abort | abort[p1_ax];
       p2_abort <= p2_abort | abort[p2_ax];
+    end
+    if (kph_q[0]) begin
+      // The datapath masks of stage 1, from its registers (used in cycles 4i+2, 4i+3).
+      p1_smask <= (p1_ph == PH_DECEL) & p1_decf & ~p1_stop;
+      p1_cin <= (p1_ph == PH_DECEL) & ~(p1_decf & ~p1_stop);
     end
     if (kph_q[1]) begin
       // Commit decisions, from the datapath registers of cycle 4i+4.

@@ -19,7 +19,7 @@
 // staging write, and the live register takes the merged value on the edge of the mirror write,
 // which acks; a configuration read answers from the mirror like a staging read. CMD.push runs the
 // loader: 25 bus cycles reading the staging words and writing the queue slot (inverted
-// deceleration, aligned deceleration fraction, resolved floor, a zero word), checking the refusal
+// deceleration, aligned deceleration fraction, resolved floor, zero words), checking the refusal
 // rules on the way; it acks at the commit. ack_o is a register; there is no err_o and no stall_o.
 // wb_dat_o is 0 except with the ack of a read. Unmapped addresses read 0 and are acked.
 //
@@ -729,7 +729,7 @@ module hexstep_wb #(
           m_raddr[7:5] = oax_q;
         end
         if (lz0_q) begin
-          m_we = 4'b0100;                              // the zero word of the slot
+          m_we = 4'b0110;                              // the zero words of the slot
           m_waddr = {oax_q, slot_word(otail_q, 3'd7)};
           m_wdata = 32'd0;
         end else begin
