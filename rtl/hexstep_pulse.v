@@ -165,7 +165,13 @@ module hexstep_pulse #(
     // flag is 0) is over next if it is at 2 now.
     cso_d = (rise || fall) ? (step_q ? over_i[1] : over_i[0]) : (cso_q || cs_q == T_TWO);
     cdo_d = rise ? over_i[3] : dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO);
-    rdy_d = !step_d && cso_d && (dir_d == tgt_d) && (cdo_d || md_d);
+    // !step_d && cso_d && (dir_d == tgt_d) && (cdo_d || md_d), written out: a rise makes STEP
+    // high (rdy_d = 0); without one, STEP high falls iff its time is over (then the low time
+    // is loaded), DIR follows a change (then setup is loaded and the mode is setup). None of
+    // the terms depends on rise, so the rise decision is one gate in front of rdy_q.
+    rdy_d = !rise && (step_q ? (cso_q && over_i[1]) : (cso_q || cs_q == T_TWO))
+            && ((dir_change ? tgt_q : dir_q) == tgt_d)
+            && (dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO || md_q));
   end
 
   always @(posedge clk_i) begin
