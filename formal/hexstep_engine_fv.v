@@ -235,7 +235,7 @@ module hexstep_engine_fv #(
       5'd11: put(2'd2, s, 3'd5, vd[63:32]);
       5'd12: put(2'd3, s, 3'd2, fl[31:0]);
       5'd13: put(2'd3, s, 3'd3, fl[63:32]);
-      5'd14: put(2'd2, s, 3'd7, 32'd0);
+      5'd14: begin put(2'd2, s, 3'd7, 32'd0); bwe = 4'b0110; end   // the zero words (banks 1, 2)
       5'd15: put(2'd2, s, 3'd2, nd[31:0]);
       5'd16: put(2'd2, s, 3'd3, nd[63:32]);
       default: ;

@@ -53,7 +53,7 @@ MUTANTS = [
     ("SPI bridge issues a read while a request waits", "hexstep_spi_wb.v",
      "if (r_valid && !cyc_q) begin", "if (r_valid) begin", "spi_wb", "prove"),
     ("speed not clamped at v_max", "hexstep_engine.v",
-     "PH_ACCEL: c_sell = c_clamp;", "PH_ACCEL: c_sell = 1'b0;", "engine", "bmc"),
+     "PH_ACCEL: c_sell = ct1_q | ~c_gt_hi;", "PH_ACCEL: c_sell = 1'b0;", "engine", "bmc"),
     ("move never ends at its N-th step", "hexstep_engine.v",
      "c_cnt_end = ~p2_fl[F_JOG] & zre_q;", "c_cnt_end = 1'b0;", "engine", "bmc_tri"),
     ("chained reversal while steps are pending", "hexstep_engine.v",

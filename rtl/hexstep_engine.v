@@ -380,9 +380,12 @@ module hexstep_engine #(
     dv1 = dstep(dfirst[1] ? pn_hi_q[31 -: SUB_W] : dr_q[1], ds_q[1]);
 
     c_clamp = ct1_q | ~gt_q;
+    // The select of S (the limit instead of t), registered as sell_q with gt_q at the end of
+    // 4i+4 from the compare's carry c_gt_hi itself (gt_q's next value), so that the S_lo and
+    // S_hi writes take it from a flip-flop.
     case (p2_ph)
-      PH_ACCEL: c_sell = c_clamp;
-      PH_DECEL: c_sell = p2_stop ? 1'b0 : p2_decf ? gt_q : (~ct1_q | gt_q);
+      PH_ACCEL: c_sell = ct1_q | ~c_gt_hi;
+      PH_DECEL: c_sell = p2_stop ? 1'b0 : p2_decf ? c_gt_hi : (~ct1_q | c_gt_hi);
       default:  c_sell = 1'b0;
     endcase
     c_stop_end = p2_stop & (~ct1_q | p2_fl[F_DZ]);
@@ -399,8 +402,6 @@ module hexstep_engine #(
     ra0 = 8'd0; ra1 = 8'd0; ra2 = 8'd0; ra3 = 8'd0;
     wa0 = {p2_ax, 5'd0}; wa1 = {p2_ax, 5'd0}; wa2 = {p2_ax, 5'd0};
     wd0 = 32'd0; wd1 = 32'd0; wd2 = 32'd0;
-    we0 = 1'b0; we1 = 1'b0; we2 = 1'b0;
-    re_e = 1'b0;
     case (kc)
       2'd0: begin
         // Reads of the sampled axis: S (or V_START), P, addend, limit, low words.
@@ -408,10 +409,9 @@ module hexstep_engine #(
         ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd7)} : {p1_ax, 5'd0};
         ra2 = {p1_ax, slot_word(p1_slot, a_off(p1_ph, p1_decf, p1_stop))};
         ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd2 : 3'd0)};
-        re_e = p1_valid & p1_gen;
         // Writes: steps-to-end of the axis two slots back, P low of the last one.
-        wa0 = {p3_ax, 5'd2}; wd0 = re_n_q; we0 = p3_we;
-        wa1 = {p2_ax, 5'd0}; wd1 = pn_lo_q; we1 = p2_valid & p2_gen;
+        wa0 = {p3_ax, 5'd2}; wd0 = re_n_q;
+        wa1 = {p2_ax, 5'd0}; wd1 = pn_lo_q;
       end
       2'd1: begin
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd1)} : {p1_ax, 5'd1};
@@ -420,22 +420,27 @@ module hexstep_engine #(
         ra2 = {p1_ax, slot_word(p1_slot, (a_off(p1_ph, p1_decf, p1_stop) == 3'd7) ? 3'd7 :
                                          a_off(p1_ph, p1_decf, p1_stop) + 3'd1)};
         ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd3 : 3'd1)};
-        re_e = p1_valid & p1_gen;
-        wa0 = {p2_ax, 5'd0}; wd0 = c_sell ? llo_q : t_lo_q; we0 = p2_valid & p2_gen;
-        wa1 = {p2_ax, 5'd1}; wd1 = pn_hi_q; we1 = p2_valid & p2_gen;
-        wa2 = {p2_ax, 5'd0}; wd2 = rd_n_q; we2 = p2_valid & p2_gen;
+        wa0 = {p2_ax, 5'd0}; wd0 = sell_q ? llo_q : t_lo_q;
+        wa1 = {p2_ax, 5'd1}; wd1 = pn_hi_q;
+        wa2 = {p2_ax, 5'd0}; wd2 = rd_n_q;
       end
       2'd2: begin
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd2)} : {p1_ax, 5'd2};
         ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd0)} : {p1_ax, 5'd2};
         ra2 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd6)} : {p1_ax, 5'd0};
         ra3 = {p1_ax, slot_word(p1_slot, 3'd4)};
-        re_e = p1_valid & p1_gen;
-        wa0 = {p2_ax, 5'd1}; wd0 = sell_q ? lhi_q : t_hi_q; we0 = p2_valid & p2_gen;
-        wa1 = {p2_ax, 5'd2}; wd1 = ra_n_q; we1 = p2_valid & p2_gen;
+        wa0 = {p2_ax, 5'd1}; wd0 = sell_q ? lhi_q : t_hi_q;
+        wa1 = {p2_ax, 5'd2}; wd1 = ra_n_q;
       end
       default: ;
     endcase
+    // Read and write enables from the one-hot slot cycle (no decode of the counter): reads in
+    // 4i..4i+2; writes of bank 0 (steps-to-end of stage 3 in 4i, S_lo, S_hi), bank 1 (P_lo,
+    // P_hi, to-acc) and bank 2 (to-dec in 4i+1) of stage 2.
+    re_e = ~kph_q[3] & p1_valid & p1_gen;
+    we0 = (kph_q[0] & p3_we) | ((kph_q[1] | kph_q[2]) & p2_valid & p2_gen);
+    we1 = ~kph_q[3] & p2_valid & p2_gen;
+    we2 = kph_q[1] & p2_valid & p2_gen;
   end
 
   // Datapath (clock enables straight from the one-hot slot cycle kph_q).
@@ -455,6 +460,7 @@ module hexstep_engine #(
     end
     if (kph_q[0]) begin  // counters, compare high, deceleration point, division 1 (cycle 4i+4)
       gt_q <= c_gt_hi;
+      sell_q <= c_sell;
       re_n_q <= rd0 - {31'd0, step_q};
       ra_n_q <= rd1 - {31'd0, step_q};
       rd_n_q <= rd2 - {31'd0, step_q};
@@ -465,9 +471,6 @@ module hexstep_engine #(
       dfh_q <= ~dfc_hc[17];
       dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
       dfl_q <= ~dfc_lc[17];
-    end
-    if (kph_q[1]) begin  // cycle 4i+5: select of S
-      sell_q <= c_sell;
     end
     if (kph_q[3]) begin
       due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
