@@ -161,7 +161,7 @@ module hexstep_pulse_fv #(
   (* keep *) wire [1:0]         f_owed_i, f_wait_i;     // u_dut.owed_q, u_dut.wait_q
   (* keep *) wire [PULSE_W-1:0] f_cs, f_cd;             // u_dut.cs_q, u_dut.cd_q
   (* keep *) wire               f_cso, f_cdo, f_md;     // u_dut.cso_q, cdo_q, md_q
-  (* keep *) wire               f_rdy;                  // u_dut.rdy_q
+  (* keep *) wire               f_rz;                   // u_dut.rz_q
 
   function has(input [6:0] t);
     has = (f_v0 && f_e0 == t) || (f_v1 && f_e1 == t) || (f_v2 && f_e2 == t);
@@ -179,8 +179,9 @@ module hexstep_pulse_fv #(
     if (f_n == 2'd3) assert (has(f_t2) && f_d2 > f_d1);
     assert (f_owed_i == f_owed && f_wait_i == f_wait[1:0]);
     assert (f_cso == (f_cs <= 1) && f_cdo == (f_cd <= 1));
-    // The registered rise condition: STEP low, low over, DIR at the target, setup over.
-    assert (f_rdy == (!step_l && f_cso && dir_l == f_tgt && (f_cdo || f_md)));
+    // The registered rise condition: STEP low, low over, DIR at the target, setup over, a step
+    // owed.
+    assert (f_rz == (!step_l && f_cso && dir_l == f_tgt && (f_cdo || f_md) && f_owed_i != 2'd0));
     // c_step: the high time while STEP is high, the low time while it is low.
     if (step_l) assert (f_cs == left(f_high, c_r));
     else assert (c_f >= lo_t ? f_cs <= 1 : f_cs == left(f_low, c_f));

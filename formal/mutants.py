@@ -26,7 +26,7 @@ MUTANTS = [
      "dir_change = (dir_q != tgt_q) && (cdo_q || !md_q);", "dir_change = (dir_q != tgt_q);",
      "pulse", "prove"),
     ("rise at an abort edge", "hexstep_pulse.v",
-     "rise = !abort_i && (owed_q != 2'd0)", "rise = (owed_q != 2'd0)", "pulse", "prove"),
+     "rise = !abort_i && rz_q;", "rise = rz_q;", "pulse", "prove"),
     ("rise ignores the DIR setup time", "hexstep_pulse.v",
      "&& (dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO || md_q));", "&& 1'b1;", "pulse",
      "prove"),

@@ -85,10 +85,11 @@ module hexstep_pulse #(
   // Each counter's "interval over" (at most 1), kept in a register beside it so that the rise
   // condition is a few gates of registers.
   reg               cso_q, cso_d, cdo_q, cdo_d;
-  // A rise may happen now if a step is owed: STEP low, low time over, DIR at the target, setup
-  // over. Registered from the next state, so that a rise (which loads both counters, the mode
-  // and the position) is one gate of registers.
-  reg               rdy_q, rdy_d;
+  // A rise may happen now (rdy): STEP low, low time over, DIR at the target, setup over; and a
+  // step is owed. Registered from the next state (rz_q: rdy and a step owed), so that a rise
+  // (which loads both counters, the mode and the position) is an abort's gate on a register.
+  reg               rdy_d;
+  reg               rz_q, rz_d;
 
   reg dir_change, rise, fall, due0, due1, due2;
 
@@ -100,7 +101,7 @@ module hexstep_pulse #(
     // hold over: in hold mode the counter, in setup mode always (hold ended before setup began);
     // setup over: in setup mode the counter, in hold mode always (likewise).
     dir_change = (dir_q != tgt_q) && (cdo_q || !md_q);
-    rise = !abort_i && (owed_q != 2'd0) && rdy_q;
+    rise = !abort_i && rz_q;
     fall = step_q && cso_q;
 
     // Next state, defaults first.
@@ -168,10 +169,13 @@ module hexstep_pulse #(
     // !step_d && cso_d && (dir_d == tgt_d) && (cdo_d || md_d), written out: a rise makes STEP
     // high (rdy_d = 0); without one, STEP high falls iff its time is over (then the low time
     // is loaded), DIR follows a change (then setup is loaded and the mode is setup). None of
-    // the terms depends on rise, so the rise decision is one gate in front of rdy_q.
+    // the terms depends on rise, so the rise decision is one gate in front of rz_q.
     rdy_d = !rise && (step_q ? (cso_q && over_i[1]) : (cso_q || cs_q == T_TWO))
             && ((dir_change ? tgt_q : dir_q) == tgt_d)
             && (dir_change ? over_i[2] : (cdo_q || cd_q == T_TWO || md_q));
+    // rdy_d && owed_d != 0: with rdy_d there is no rise, so owed_d is owed_q plus a due entry
+    // (0 at an abort).
+    rz_d = rdy_d && !abort_i && (owed_q != 2'd0 || due0 || due1 || due2);
   end
 
   always @(posedge clk_i) begin
@@ -188,9 +192,9 @@ module hexstep_pulse #(
       md_q <= 1'b1;
       pos_q <= {POS_W{1'b0}};
       cso_q <= 1'b1; cdo_q <= 1'b1;
-      rdy_q <= 1'b1;   // STEP low, both intervals over, DIR at the target
+      rz_q <= 1'b0;    // nothing owed (STEP low, both intervals over, DIR at the target)
     end else begin
-      cso_q <= cso_d; cdo_q <= cdo_d; md_q <= md_d; rdy_q <= rdy_d;
+      cso_q <= cso_d; cdo_q <= cdo_d; md_q <= md_d; rz_q <= rz_d;
       v0_q <= v0_d;
       v1_q <= v1_d;
       v2_q <= v2_d;
