@@ -400,8 +400,6 @@ module hexstep_engine #(
   // Engine addresses and write data, by cycle of the slot.
   always @* begin
     ra0 = 8'd0; ra1 = 8'd0; ra2 = 8'd0; ra3 = 8'd0;
-    wa0 = {p2_ax, 5'd0}; wa1 = {p2_ax, 5'd0}; wa2 = {p2_ax, 5'd0};
-    wd0 = 32'd0; wd1 = 32'd0; wd2 = 32'd0;
     case (kc)
       2'd0: begin
         // Reads of the sampled axis: S (or V_START), P, addend, limit, low words.
@@ -409,9 +407,6 @@ module hexstep_engine #(
         ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd7)} : {p1_ax, 5'd0};
         ra2 = {p1_ax, slot_word(p1_slot, a_off(p1_ph, p1_decf, p1_stop))};
         ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd2 : 3'd0)};
-        // Writes: steps-to-end of the axis two slots back, P low of the last one.
-        wa0 = {p3_ax, 5'd2}; wd0 = re_n_q;
-        wa1 = {p2_ax, 5'd0}; wd1 = pn_lo_q;
       end
       2'd1: begin
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd1)} : {p1_ax, 5'd1};
@@ -420,20 +415,24 @@ module hexstep_engine #(
         ra2 = {p1_ax, slot_word(p1_slot, (a_off(p1_ph, p1_decf, p1_stop) == 3'd7) ? 3'd7 :
                                          a_off(p1_ph, p1_decf, p1_stop) + 3'd1)};
         ra3 = {p1_ax, slot_word(p1_slot, (p1_ph == PH_DECEL) ? 3'd3 : 3'd1)};
-        wa0 = {p2_ax, 5'd0}; wd0 = sell_q ? llo_q : t_lo_q;
-        wa1 = {p2_ax, 5'd1}; wd1 = pn_hi_q;
-        wa2 = {p2_ax, 5'd0}; wd2 = rd_n_q;
       end
       2'd2: begin
         ra0 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd2)} : {p1_ax, 5'd2};
         ra1 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd0)} : {p1_ax, 5'd2};
         ra2 = p1_start ? {p1_ax, slot_word(p1_slot, 3'd6)} : {p1_ax, 5'd0};
         ra3 = {p1_ax, slot_word(p1_slot, 3'd4)};
-        wa0 = {p2_ax, 5'd1}; wd0 = sell_q ? lhi_q : t_hi_q;
-        wa1 = {p2_ax, 5'd2}; wd1 = ra_n_q;
       end
       default: ;
     endcase
+    // Writes by the one-hot slot cycle (kph_q; in the bus cycle the banks take the bus's):
+    // 4i: steps-to-end of stage 3 (the axis two slots back), P_lo; 4i+1: S_lo, P_hi, to-dec;
+    // 4i+2: S_hi, to-acc.
+    wa0 = kph_q[0] ? {p3_ax, 5'd2} : {p2_ax, 4'd0, kph_q[2]};
+    wd0 = kph_q[0] ? re_n_q : sell_q ? (kph_q[1] ? llo_q : lhi_q) : (kph_q[1] ? t_lo_q : t_hi_q);
+    wa1 = {p2_ax, 3'd0, kph_q[2], kph_q[1]};
+    wd1 = kph_q[0] ? pn_lo_q : kph_q[1] ? pn_hi_q : ra_n_q;
+    wa2 = {p2_ax, 5'd0};
+    wd2 = rd_n_q;
     // Read and write enables from the one-hot slot cycle (no decode of the counter): reads in
     // 4i..4i+2; writes of bank 0 (steps-to-end of stage 3 in 4i, S_lo, S_hi), bank 1 (P_lo,
     // P_hi, to-acc) and bank 2 (to-dec in 4i+1) of stage 2.
