@@ -349,9 +349,9 @@ module hexstep_engine_fv #(
   reg        f_stopped, f_aborted_q, f_jogt;
   reg [3:0]  f_since_ab;         // cycles since the first abort edge (saturating)
   reg [5:0]  f_since_st;         // cycles since the first STOP strobe (saturating)
-  // u_eng.p3_valid, cm_pre_q (stage 3 not aborted since its sample: the one axis's flag),
-  // d_consume: the commit of a consumed (refused or empty) move
-  (* keep *) wire       f_p3_valid, f_cm_pre, f_d_consume;
+  // u_eng.cm_q (the commit cycle of stage 3, not aborted since its sample: the one axis's
+  // strobe), d_consume: the commit of a consumed (refused or empty) move
+  (* keep *) wire       f_cm, f_d_consume;
   // Requests waiting in the stage (the contract's order), as in hexstep_pulse_fv.
   reg [1:0]  f_n;
   reg [6:0]  f_t0, f_t1, f_t2;
@@ -362,7 +362,7 @@ module hexstep_engine_fv #(
 
   wire [3:0] f_nr = f_nr_q + {3'd0, f_rise};       // rising edges including this cycle's
   wire [1:0] f_nst = f_nst_q;
-  wire       f_cons = f_p3_valid && g[1:0] == 2'd0 && f_cm_pre && !abort_i && f_d_consume;
+  wire       f_cons = f_cm && !abort_i && f_d_consume;
   wire       f_take = tgt_load | f_cons;            // a move leaves the queue at this edge
   // The steps a move makes: N for a move, none for a refused or empty one (a jog: unbounded).
   wire [2:0] a_ne = (a_kind == K_MOVE) ? a_n : 3'd0, b_ne = (b_kind == K_MOVE) ? b_n : 3'd0;

@@ -224,12 +224,19 @@ module hexstep_engine #(
   reg [2:0]  p2_ax;
   reg [1:0]  p2_ph, p2_frame;
   reg [6:0]  p2_fl;
-  reg        p3_we, p3_valid, p3_dir;
-  reg [NAXES-1:0] req_pre_q, tl_pre_q, cm_pre_q;
+  reg        p3_we, p3_dir;
+  // The commit's per-axis strobes, each a register that is 1 in the commit cycle (4i+8) only:
+  // stage 3 is that axis's and was not aborted since its sample (cm_q); and it makes a step
+  // request (req_q) or loads the DIR target of a start (tl_q).
+  reg [NAXES-1:0] req_q, tl_q, cm_q;
   integer rk;
   reg [2:0]  p3_ax;
   // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
-  reg        d_gen, d_consume, d_bad, d_run, d_ended, d_decf, d_stop, d_fstop, d_req;
+  reg        d_gen, d_consume, d_bad, d_run, d_decf, d_stop, d_req;
+  // ... and their combinations on the state's enables: the move's state is updated (d_upd),
+  // it ended or was consumed (d_fin), a STOP of this frame applies to a move that runs on
+  // (d_fs_run) or to whatever the axis does (d_fs_any: no step was generated).
+  reg        d_upd, d_fin, d_fs_run, d_fs_any;
   reg [1:0]  d_ph;
 
   // ---------------------------------------------------------------------------------------
@@ -273,7 +280,9 @@ module hexstep_engine #(
   // Datapath registers (not reset).
   reg        cp0_q, ct0_q, step_q, ct1_q, cl0_q, gt_q;
   reg        dfh_q, dfe_q, dfl_q;        // P'_hi >= DEC_FRAC in halves: high >, high ==, low >=
-  reg [31:0] pn_lo_q, t_lo_q, llo_q, pn_hi_q, t_hi_q, lhi_q;
+  // tn_lo_q, tn_hi_q hold t inverted: the compare's operand as its carry chain takes it (no
+  // inverting LUT in front of the chain; the write of t inverts it in its select LUT).
+  reg [31:0] pn_lo_q, tn_lo_q, llo_q, pn_hi_q, tn_hi_q, lhi_q;
   reg [31:0] re_n_q, ra_n_q, rd_n_q;
   reg        zre_q, zra_q, zrd_q, zrd0_q, sell_q;
   // Sub-tick division: two units, one for the even and one for the odd axes, each doing one
@@ -366,11 +375,14 @@ module hexstep_engine #(
   wire c_gt_lo, c_gt_hi;
   wire [31:0] unused_lo, unused_hi;
   // (Registered in cycles 4i+3 and 4i+4: add_co's flags of those cycles.)
-  assign {c_gt_lo, unused_lo} = add_co(llo_q, ~t_lo_q, 1'b0, kph_q[3], g_q[0]);
-  assign {c_gt_hi, unused_hi} = add_co(lhi_q, ~t_hi_q, cl0_q, kph_q[0], ~g_q[1]);
+  assign {c_gt_lo, unused_lo} = add_co(llo_q, tn_lo_q, 1'b0, kph_q[3], g_q[0]);
+  assign {c_gt_hi, unused_hi} = add_co(lhi_q, tn_hi_q, cl0_q, kph_q[0], ~g_q[1]);
 
   // Stage-2 decisions (cycles 4i+5, 4i+6), from registers.
+  reg        c_sell1, c_sell0;
   reg        c_clamp, c_sell, c_stop_end, c_cnt_end, c_dec_trig, c_acc_end, c_ended;
+  // A start of a refused or empty move: consumed at its commit, no step.
+  wire       c_consume = p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);
   reg [1:0]  c_ph_n;
   reg        c_decf_n;
 
@@ -383,11 +395,14 @@ module hexstep_engine #(
     // The select of S (the limit instead of t), registered as sell_q with gt_q at the end of
     // 4i+4 from the compare's carry c_gt_hi itself (gt_q's next value), so that the S_lo and
     // S_hi writes take it from a flip-flop.
+    // Written as a select by the compare of two values of registers only (c_sell1 with the
+    // limit above t, c_sell0 without), so that one LUT follows the carry chain.
     case (p2_ph)
-      PH_ACCEL: c_sell = ct1_q | ~c_gt_hi;
-      PH_DECEL: c_sell = p2_stop ? 1'b0 : p2_decf ? c_gt_hi : (~ct1_q | c_gt_hi);
-      default:  c_sell = 1'b0;
+      PH_ACCEL: begin c_sell1 = ct1_q; c_sell0 = 1'b1; end
+      PH_DECEL: begin c_sell1 = ~p2_stop; c_sell0 = ~p2_stop & ~p2_decf & ~ct1_q; end
+      default:  begin c_sell1 = 1'b0; c_sell0 = 1'b0; end
     endcase
+    c_sell = c_gt_hi ? c_sell1 : c_sell0;
     c_stop_end = p2_stop & (~ct1_q | p2_fl[F_DZ]);
     c_cnt_end = ~p2_fl[F_JOG] & zre_q;
     c_dec_trig = ~p2_fl[F_JOG] & (p2_ph != PH_DECEL) & ((zrd_q & dfc) | (zrd0_q & step_q));
@@ -428,7 +443,7 @@ module hexstep_engine #(
     // 4i: steps-to-end of stage 3 (the axis two slots back), P_lo; 4i+1: S_lo, P_hi, to-dec;
     // 4i+2: S_hi, to-acc.
     wa0 = kph_q[0] ? {p3_ax, 5'd2} : {p2_ax, 4'd0, kph_q[2]};
-    wd0 = kph_q[0] ? re_n_q : sell_q ? (kph_q[1] ? llo_q : lhi_q) : (kph_q[1] ? t_lo_q : t_hi_q);
+    wd0 = kph_q[0] ? re_n_q : sell_q ? (kph_q[1] ? llo_q : lhi_q) : ~(kph_q[1] ? tn_lo_q : tn_hi_q);
     wa1 = {p2_ax, 3'd0, kph_q[2], kph_q[1]};
     wd1 = kph_q[0] ? pn_lo_q : kph_q[1] ? pn_hi_q : ra_n_q;
     wa2 = {p2_ax, 5'd0};
@@ -447,13 +462,13 @@ module hexstep_engine #(
     if (kph_q[2]) begin  // low words of S, P, addend, limit (cycle 4i+2)
       {cp0_q, pn_lo_q} <= plo_sum;
       ct0_q <= s_lo_sum[32];
-      t_lo_q <= p1_smask ? rd2 : s_lo_sum[31:0];
+      tn_lo_q <= ~(p1_smask ? rd2 : s_lo_sum[31:0]);
       llo_q <= rd3;
     end
     if (kph_q[3]) begin  // high words (cycle 4i+3)
       {step_q, pn_hi_q} <= phi_sum;
       ct1_q <= s_hi_sum[32];
-      t_hi_q <= p1_smask ? rd2 : s_hi_sum[31:0];
+      tn_hi_q <= ~(p1_smask ? rd2 : s_hi_sum[31:0]);
       cl0_q <= c_gt_lo;
       lhi_q <= rd3;
     end
@@ -517,10 +532,11 @@ module hexstep_engine #(
     pos = 2'd0; sfk = {SF_W{1'b0}};
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
-    // an abort since the sample cancels it. Per axis from its flag cm_pre_q (stage 3 is that
-    // axis's, not aborted), so that no decode of the stage's axis is on the state's enables.
+    // an abort since the sample cancels it. Per axis from its strobe cm_q (stage 3 is that
+    // axis's, not aborted, and this is the commit cycle), so that neither a decode of the
+    // stage's axis nor the slot cycle is on the state's enables.
     for (k = 0; k < NAXES; k = k + 1) begin
-      cm = p3_valid && kph_q[0] && cm_pre_q[k];
+      cm = cm_q[k];
       cm_ok = cm && !abort[k];
       // (An aborted stage's axis has starting clear already: the abort cleared it.)
       if (cm) starting_d[k] = 1'b0;
@@ -528,8 +544,8 @@ module hexstep_engine #(
         if (d_consume) begin
           consumed[k] = 1'b1;
           refused[k] = d_bad;
-        end else if (d_gen) begin
-          // (The step request of this commit is req_pre_q.)
+        end
+        if (d_upd) begin   // not consumed, a step slot (its step request is req_q)
           run_d[k] = d_run;
           ph_d[k*2 +: 2] = d_ph;
           decf_d[k] = d_decf;
@@ -537,11 +553,11 @@ module hexstep_engine #(
         end
         // The move ended or was consumed: the next queued move chains if the axis runs and
         // one is queued.
-        if (d_consume || (d_gen && d_ended)) begin
+        if (d_fin) begin
           if (running_q[k] && qn_q[k*2 +: 2] != 2'd0) chain_d[k] = 1'b1;
           else running_d[k] = 1'b0;
         end
-        if (d_fstop && (d_gen ? d_run : run_q[k])) begin
+        if (d_fs_run || (d_fs_any && run_q[k])) begin
           stop_d[k] = 1'b1;
           ph_d[k*2 +: 2] = PH_DECEL;
           decf_d[k] = 1'b0;
@@ -629,7 +645,8 @@ module hexstep_engine #(
       fstart_q <= {NS{1'b0}}; fstop_q <= {NS{1'b0}};
       ph_q <= {NS*2{1'b0}}; act_q <= {NS*2{1'b0}}; qn_q <= {NS*2{1'b0}};
       sf_q <= {NS*SF_W{1'b0}};
-      p1_valid <= 1'b0; p2_valid <= 1'b0; p3_valid <= 1'b0;
+      p1_valid <= 1'b0; p2_valid <= 1'b0;
+      req_q <= {NAXES{1'b0}}; tl_q <= {NAXES{1'b0}}; cm_q <= {NAXES{1'b0}};
       si_q <= 3'd0; smp_oh_q <= {NS{1'b0}};
     end else begin
       g_q <= g_q + 7'd1;
@@ -648,7 +665,16 @@ module hexstep_engine #(
       // Pipeline valid bits.
       if (kph_q[3]) p1_valid <= s_valid;
       if (kph_q[3]) p2_valid <= p1_valid;
-      if (kph_q[3]) p3_valid <= p2_valid;
+      // The commit's strobes: set at the edge ending 4i+7 (stage 2 becomes stage 3, d_* are
+      // from 4i+5), cleared at the next one; an abort at the commit edge itself still cancels
+      // the commit (cm_ok, req_o, tgt_load_o).
+      for (rk = 0; rk < NAXES; rk = rk + 1) begin
+        cm_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && ({29'd0, p2_ax} == rk);
+        req_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen
+                     && d_req && ({29'd0, p2_ax} == rk);
+        tl_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && p2_start
+                    && ({29'd0, p2_ax} == rk);
+      end
     end
   end
 
@@ -666,18 +692,6 @@ module hexstep_engine #(
       p3_we <= p2_valid & p2_gen;
       p3_ax <= p2_ax;
       p3_dir <= p2_fl[F_DIR];
-      // The step request of the coming commit, one flag per axis (d_* are from cycle 4i+5,
-      // stage 2 becomes stage 3 here); an abort at the commit edge itself still cancels it.
-      for (rk = 0; rk < NAXES; rk = rk + 1)
-        req_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen && d_req
-                         && ({29'd0, p2_ax} == rk);
-      // The commit's axis, one flag per axis (stage 3's, not aborted since the sample).
-      for (rk = 0; rk < NAXES; rk = rk + 1)
-        cm_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && ({29'd0, p2_ax} == rk);
-      // The same for the DIR target load of a start (tgt_load_o).
-      for (rk = 0; rk < NAXES; rk = rk + 1)
-        tl_pre_q[rk] <= p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && p2_start
-                        && ({29'd0, p2_ax} == rk);
     end else begin
       p1_abort <= p1_abort | abort[p1_ax];
       p2_abort <= p2_abort | abort[p2_ax];
@@ -689,15 +703,17 @@ module hexstep_engine #(
     end
     if (kph_q[1]) begin
       // Commit decisions, from the datapath registers of cycle 4i+4.
-      d_consume <= p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);
+      d_consume <= c_consume;
+      d_upd <= ~c_consume & p2_gen;
+      d_fin <= c_consume | (p2_gen & c_ended);
+      d_fs_run <= p2_fstop & p2_gen & ~c_ended;
+      d_fs_any <= p2_fstop & ~p2_gen;
       d_bad <= p2_fl[F_BAD];
       d_gen <= p2_gen;
       d_run <= ~c_ended;
-      d_ended <= c_ended;
       d_ph <= c_ph_n;
       d_decf <= c_decf_n;
       d_stop <= p2_stop;
-      d_fstop <= p2_fstop;
       d_req <= step_q;
     end
   end
@@ -714,8 +730,8 @@ module hexstep_engine #(
       assign busy_o[gk] = busy8[gk];
       assign run_o[gk] = running_q[gk] | spend_q[gk] | fstart_q[gk];
       assign phase_o[gk*2 +: 2] = run_q[gk] ? ph_q[gk*2 +: 2] : PH_IDLE;
-      assign req_o[gk] = p3_valid && req_pre_q[gk] && kph_q[0] && !abort[gk];
-      assign tgt_load_o[gk] = p3_valid && tl_pre_q[gk] && kph_q[0] && !abort[gk];
+      assign req_o[gk] = req_q[gk] && !abort[gk];
+      assign tgt_load_o[gk] = tl_q[gk] && !abort[gk];
     end
   endgenerate
   assign g_o = g_q;
