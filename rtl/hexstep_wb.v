@@ -397,6 +397,11 @@ module hexstep_wb #(
   function ld_inv(input [5:0] j);
     ld_inv = (j == 6'd18) || (j == 6'd20);
   endfunction
+  // Steps whose word is held (lh) for the compare of a later step.
+  function ld_hold(input [5:0] j);
+    ld_hold = (j == 6'd1) || (j == 6'd5) || (j == 6'd7) || (j == 6'd9) || (j == 6'd11) ||
+              (j == 6'd13) || (j == 6'd15) || (j == 6'd17) || (j == 6'd19);
+  endfunction
   // Steps whose compare is the high word of a 64-bit compare (the low word's borrow enters).
   function ld_hi_cmp(input [5:0] j);
     ld_hi_cmp = (j == 6'd8) || (j == 6'd12) || (j == 6'd16) || (j == 6'd20);
@@ -461,13 +466,14 @@ module hexstep_wb #(
   localparam [1023:0] LD_RD = ld_rd_tab(0);
   // The loader step whose data is in rdq after the edge (ocnt - 1): 63 from idle (ocnt = 0),
   // ocnt itself at a push's bus cycle. The functions need no guard for idle: ld_dst, ld_hi_cmp,
-  // ld_shl and ld_inv are 0 at 63, and LD_RD's entry 63 is ld_src(0, v).
+  // ld_shl, ld_inv and ld_hold are 0 at 63, and LD_RD's entry 63 is ld_src(0, v).
   wire [5:0] lnx = idle ? 6'h3F : ocnt_q;
   wire       ldc_ld = idle || (op_q == OP_PUSH && bus_go);
   reg  [5:0] lst_q;                  // ocnt - 1: the loader step whose data is in rdq
   reg        lz0_q, lz1_q, lrd_q;    // ocnt == 0, ocnt == 1, ocnt < LOADER_STEPS
   reg        lhc_q;                  // ld_hi_cmp(ocnt - 1)
   reg        lsh_q, linv_q;          // the word of step ocnt - 1 is stored shifted / inverted
+  reg        lhe_q;                  // ... is held in lh (ld_hold), lh's enable
   reg  [5:0] ldst_q;                 // ld_dst(ocnt - 1)
   reg  [6:0] lsr0_q, lsr1_q;         // {bank, word} of the staging word that step ocnt reads,
                                      // for V_END nonzero (0) and zero (1): ld_src's two cases
@@ -480,6 +486,7 @@ module hexstep_wb #(
       lhc_q <= ld_hi_cmp(lnx);
       lsh_q <= ld_shl(lnx);
       linv_q <= ld_inv(lnx);
+      lhe_q <= ld_hold(lnx);
       ldst_q <= ld_dst(lnx);
       lsr0_q <= LD_RD[{lnx, 1'b0, 3'b000} +: 7];
       lsr1_q <= LD_RD[{lnx, 1'b1, 3'b000} +: 7];
@@ -492,7 +499,7 @@ module hexstep_wb #(
   (* keep *) wire fv_ldc_ok =
       lst_q == fv_ls && lz0_q == (ocnt_q == 6'd0) && lz1_q == (ocnt_q == 6'd1) &&
       lrd_q == (ocnt_q < LOADER_STEPS) && lhc_q == ld_hi_cmp(fv_ls) &&
-      lsh_q == ld_shl(fv_ls) && linv_q == ld_inv(fv_ls) &&
+      lsh_q == ld_shl(fv_ls) && linv_q == ld_inv(fv_ls) && lhe_q == ld_hold(fv_ls) &&
       ldst_q == ld_dst(fv_ls) &&
       lsr0_q == {stg_bank(ld_src(ocnt_q, 1'b0)), stg_word(ld_src(ocnt_q, 1'b0))} &&
       lsr1_q == {stg_bank(ld_src(ocnt_q, 1'b1)), stg_word(ld_src(ocnt_q, 1'b1))};
@@ -636,17 +643,19 @@ module hexstep_wb #(
           // and written to lc / lg in the next cycle (the bus cycle, lcv_q), below: the next
           // compare is four cycles later, the commit's checks (l_flags) after step 24.
           if (lz1_q || lhc_q) lc_d = 1'b1;
+          // The word held for a later compare: enabled by its registered decode (lhe_q) rather
+          // than a decode of the step in front of 32 flip-flops.
+          if (lhe_q) lh_d = rdq;
           case (lst_q)
             6'd0: begin ljog_d = rdq[1]; ldir_d = rdq[0]; end
-            6'd1: begin lh_d = rdq; lz_d[0] = (rdq == 32'd0); end
+            6'd1: lz_d[0] = (rdq == 32'd0);
             6'd2: lz_d[1] = (rdq == 32'd0);
             6'd3: lz_d[2] = (rdq == 32'd0);
             6'd4: lz_d[3] = (rdq == 32'd0);
-            6'd5: begin lh_d = rdq; lz_d[4] = (rdq == 32'd0); end
+            6'd5: lz_d[4] = (rdq == 32'd0);
             6'd6: lz_d[6] = (rdq == 32'd0);
-            6'd7: begin lh_d = rdq; lz_d[5] = (rdq == 32'd0); end
+            6'd7: lz_d[5] = (rdq == 32'd0);
             6'd8: lz_d[7] = (rdq == 32'd0);
-            6'd9, 6'd13, 6'd17, 6'd11, 6'd15, 6'd19: lh_d = rdq;
             6'd10: lz_d[8] = (rdq == 32'd0);
             6'd12: lz_d[9] = (rdq == 32'd0);
             6'd18: lz_d[10] = (rdq == 32'd0);
