@@ -213,10 +213,13 @@ module hexstep_wb #(
     rq_d[0] = wb_we_i;                                  // a write
     rq_d[1] = a_hit && w_stg;                           // a staging word of an axis
     rq_d[2] = a_hit && w_cfg;                           // a configuration word of an axis
-    for (rqk = 0; rqk < 8; rqk = rqk + 1)               // global word i (0..7)
-      rq_d[3 + rqk] = g_hit && ({27'd0, widx} == rqk);
-    rq_d[11] = a_hit && (widx == W_CMD);                // CMD, ERR, POS_LO, STATUS, POS_HI
-    rq_d[12] = a_hit && (widx == W_ERR);                //   of an axis
+    for (rqk = 0; rqk < 8; rqk = rqk + 1)               // a write of global word i (0..7)
+      rq_d[3 + rqk] = wb_we_i && g_hit && ({27'd0, widx} == rqk);
+    // A write of CMD with its push bit (byte 0 enabled); ERR, POS_LO, STATUS, POS_HI of an
+    // axis. (The held request's direction and data are as registered: the writes' decisions
+    // take these flags, not the bus.)
+    rq_d[11] = wb_we_i && a_hit && (widx == W_CMD) && wb_dat_i[0] && wb_sel_i[0];
+    rq_d[12] = a_hit && (widx == W_ERR);
     rq_d[13] = a_hit && (widx == W_POS_LO);
     rq_d[14] = a_hit && (widx == W_STATUS);
     rq_d[15] = a_hit && (widx == W_POS_HI);
@@ -563,19 +566,19 @@ module hexstep_wb #(
 
     // ---- global registers ----
     estop_rise = es2_q & ~estop_q;
-    estop_d    = es2_q | (estop_q & ~(wr & rq_gw_q[G_GSTATUS[2:0]] & wdat[0]));
+    estop_d    = es2_q | (estop_q & ~(req & rq_gw_q[G_GSTATUS[2:0]] & wdat[0]));
     if (req) begin
       ack_d = 1'b1;
-      if (wr && rq_gw_q[G_ABORT[2:0]])    abort_cmd_d = wdat[NAXES-1:0];
-      if (wr && rq_gw_q[G_IRQ_EN[2:0]])   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
-      if (wr && rq_gw_q[G_IRQ_PEND[2:0]]) pend_d = pend_q & ~wdat;
+      if (rq_gw_q[G_ABORT[2:0]])    abort_cmd_d = wdat[NAXES-1:0];
+      if (rq_gw_q[G_IRQ_EN[2:0]])   irq_en_d = ((irq_en_q & ~bmask) | wdat) & irq_mask;
+      if (rq_gw_q[G_IRQ_PEND[2:0]]) pend_d = pend_q & ~wdat;
       if (rq_stg_q || rq_cfg_q) begin
         // Staging word or configuration: a memory operation (configuration writes update the
         // live register when the merged word is written to its mirror).
         ack_d = 1'b0;
         op_d = rq_stg_q ? (wr ? OP_SWR : OP_SRD) : (wr ? OP_CWR : OP_CRD);
       end
-      if (wr && rq_cmd_q && wdat[0]) begin
+      if (rq_cmd_q) begin
         // The axis's drop (e-stop, abort) and queue fill, selected by the one-hot axis.
         drop = estop_q | ((abort_q & rq_hit_q) != {NAXES{1'b0}});
         for (i = 0; i < NAXES; i = i + 1)
@@ -838,8 +841,8 @@ module hexstep_wb #(
   assign wb_dat_o = dat_q & {32{ack_q & rdk_q}};
   assign irq_o    = irq_q;
   // START and STOP: strobes at the request's edge; ABORT: a registered strobe for the next.
-  assign start_w_o = (wr && rq_gw_q[G_START[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
-  assign stop_w_o  = (wr && rq_gw_q[G_STOP[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign start_w_o = (req && rq_gw_q[G_START[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
+  assign stop_w_o  = (req && rq_gw_q[G_STOP[2:0]]) ? wdat[NAXES-1:0] : {NAXES{1'b0}};
   assign abort_o   = abort_q;
   assign push_o       = pcommit_q;
   assign push_axis_o  = oax_q;
