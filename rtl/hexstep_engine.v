@@ -229,10 +229,15 @@ module hexstep_engine #(
   // stage 3 is that axis's and was not aborted since its sample (cm_q); and it makes a step
   // request (req_q) or loads the DIR target of a start (tl_q).
   reg [NAXES-1:0] req_q, tl_q, cm_q;
+  reg [NAXES-1:0] cm_n;                  // cm_q's next value
   integer rk;
+  always @* begin
+    for (rk = 0; rk < NAXES; rk = rk + 1)
+      cm_n[rk] = kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && ({29'd0, p2_ax} == rk);
+  end
   reg [2:0]  p3_ax;
   // Commit decisions (registered at the end of 4i+5, applied at the end of 4i+8).
-  reg        d_gen, d_consume, d_bad, d_run, d_decf, d_stop, d_req;
+  reg        d_consume, d_bad, d_run, d_decf, d_stop, d_req;
   // ... and their combinations on the state's enables: the move's state is updated (d_upd),
   // it ended or was consumed (d_fin), a STOP of this frame applies to a move that runs on
   // (d_fs_run) or to whatever the axis does (d_fs_any: no step was generated).
@@ -394,9 +399,8 @@ module hexstep_engine #(
     c_clamp = ct1_q | ~gt_q;
     // The select of S (the limit instead of t), registered as sell_q with gt_q at the end of
     // 4i+4 from the compare's carry c_gt_hi itself (gt_q's next value), so that the S_lo and
-    // S_hi writes take it from a flip-flop.
-    // Written as a select by the compare of two values of registers only (c_sell1 with the
-    // limit above t, c_sell0 without), so that one LUT follows the carry chain.
+    // S_hi writes take it from a flip-flop; written as the compare's select of two functions
+    // of registers (c_sell1: the limit above t, c_sell0: not), so one LUT follows the chain.
     case (p2_ph)
       PH_ACCEL: begin c_sell1 = ct1_q; c_sell0 = 1'b1; end
       PH_DECEL: begin c_sell1 = ~p2_stop; c_sell0 = ~p2_stop & ~p2_decf & ~ct1_q; end
@@ -668,13 +672,9 @@ module hexstep_engine #(
       // The commit's strobes: set at the edge ending 4i+7 (stage 2 becomes stage 3, d_* are
       // from 4i+5), cleared at the next one; an abort at the commit edge itself still cancels
       // the commit (cm_ok, req_o, tgt_load_o).
-      for (rk = 0; rk < NAXES; rk = rk + 1) begin
-        cm_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && ({29'd0, p2_ax} == rk);
-        req_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && d_gen
-                     && d_req && ({29'd0, p2_ax} == rk);
-        tl_q[rk] <= kph_q[3] && p2_valid && !(p2_abort | abort[p2_ax]) && !d_consume && p2_start
-                    && ({29'd0, p2_ax} == rk);
-      end
+      cm_q <= cm_n;
+      req_q <= cm_n & {NAXES{d_upd & d_req}};
+      tl_q <= cm_n & {NAXES{~d_consume & p2_start}};
     end
   end
 
@@ -709,7 +709,6 @@ module hexstep_engine #(
       d_fs_run <= p2_fstop & p2_gen & ~c_ended;
       d_fs_any <= p2_fstop & ~p2_gen;
       d_bad <= p2_fl[F_BAD];
-      d_gen <= p2_gen;
       d_run <= ~c_ended;
       d_ph <= c_ph_n;
       d_decf <= c_decf_n;
