@@ -291,7 +291,9 @@ module hexstep_engine #(
   reg [31:0] re_n_q, ra_n_q, rd_n_q;
   reg        zre_q, zra_q, zrd_q, zrd0_q, sell_q;
   // Sub-tick division: two units, one for the even and one for the odd axes, each doing one
-  // restoring step per cycle in cycles 4i+4..4i+8 (the units alternate, so a step never waits).
+  // restoring step per cycle in cycles 4i+4..4i+7 (the units alternate, so a step never waits);
+  // the last quotient bit is a two-step look-ahead in 4i+7 (req_due_q below), and a unit's step
+  // in 4i+8 is unused (its next slot's first step takes the overshoot, dfirst).
   reg [SUB_W-1:0] dr_q [0:1];              // partial remainder
   reg [SUB_W-1:0] ds_q [0:1];              // divisor: top bits of S
   reg [3:0]       dq_q [0:1];              // quotient bits so far
@@ -344,29 +346,38 @@ module hexstep_engine #(
   wire [1:0]      dfirst = {2{kph_q[0]}} & {p2_ax[0], ~p2_ax[0]};
   // Due cycle F + 68 - q of the request, with q = {h, q0} (h: the first four quotient bits):
   // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
-  // F + 68 when the divisor is zero (q = 0). Both candidates are registered at the end of
-  // cycle 4i+7, when the fourth step of the slot's unit (p2's) is computed; the last step in
-  // 4i+8 only selects one. With F = 32 * frame, F + 37 + 2 * ~h = 2 * ({frame, ~h} + 18) + 1
-  // (the frame and ~h do not overlap); the adds are on registers only (see dhu below).
-  reg  [6:0]      due_a_q, due_b_q;
+  // F + 68 when the divisor is zero (q = 0). It is registered (req_due_q) at the end of cycle
+  // 4i+7, when the slot's unit (p2's) holds the remainder r of three steps: the fourth bit is
+  // q3 = 2r >= s, and the fifth, q0 = 2(2r - s) >= s = 4r >= 3s when q3 = 1, else 4r >= s
+  // (exact: r <= s, so neither 4r nor 3s overflows SUB_W + 2 bits). So the fifth step of cycle
+  // 4i+8 is not on the due's path, and the commit takes a register. With F = 32 * frame,
+  // F + 37 + 2 * ~h = 2 * ({frame, ~h} + 18) + 1 (the frame and ~h do not overlap); the adds
+  // are on registers only (see dhu below).
+  reg  [6:0]      req_due_q;
   wire            du = p2_ax[0];                            // the unit of stage 2's axis
+  // 3 s of the unit of stage 2's axis, registered in every cycle (valid from 4i+5: ds_q is
+  // loaded at the end of 4i+3).
+  reg  [SUB_W+1:0] ds3_q;
+  wire [SUB_W-1:0] dr_u = dr_q[du];
+  wire [SUB_W-1:0] ds_u = ds_q[du];
   // The fourth quotient bit: the compare of dstep on the unit's own remainder (the first-step
   // select, dfirst, is 0 in that cycle and stays off this path).
-  wire            dq3 = dbit(dr_q[du], ds_q[du]);
+  wire            dq3 = dbit(dr_u, ds_u);
+  wire            dc1 = {dr_u, 2'b00} >= {2'b00, ds_u};             // 4r >= s
+  wire            dc3 = {dr_u, 2'b00} >= ds3_q;                      // 4r >= 3s
+  wire            dq0 = dq3 ? dc3 : dc1;
   wire [6:0]      dbase = {p2_frame, 5'd0};
   localparam [5:0] DUE_HALF = DUE_OFFSET[6:1] - 6'd16;      // 18 = (68 - 32) / 2
   // {frame, ~h} + 18 with h = {dq[2:0], dq3}: 18 is even, so the sum is {U, ~dq3} with
   // U = {frame, ~dq[2:0]} + 9 (registers only), and one more is {U, 1} or {U + 1, 0}: the
-  // fourth quotient bit only selects, after the adds.
+  // quotient bits only select, after the adds. The due is {U, ~q3, 1} when q0 = 1, {U, 1, 0}
+  // when q0 = 0 and q3 = 1, {U + 1, 0, 0} when both are 0: its bits 1:0 are {q0 ^ q3, q0},
+  // and the high bits are U + 1 only when q3 = 0 and 4r < s (q0 = 0 then), off the q0 select.
   wire [4:0]      dhb = {p2_frame, ~dq_q[du][2:0]};
   wire [4:0]      dhu = dhb + DUE_HALF[5:1];
   wire [4:0]      dhu1 = dhb + (DUE_HALF[5:1] + 5'd1);
   wire            unused_due_half = DUE_HALF[0];
-  wire [6:0]      due_h = {dhu, ~dq3, 1'b1};                          // q0 = 1: F + 37 + 2 * ~h
-  wire [6:0]      due_h1 = dq3 ? {dhu, 2'b10} : {dhu1, 2'b00};        // q0 = 0: one more
-  // The last quotient bit (cycle 4i+8): the last step (dstep) of the slot's unit, on operands
-  // selected before its compare.
-  wire            q0_last = dbit(dr_q[p3_ax[0]], ds_q[p3_ax[0]]);
+  wire [6:0]      due_n = {(dq3 | dc1) ? dhu : dhu1, dq0 ^ dq3, dq0};
 
   // The deceleration point P'_hi >= DEC_FRAC (cycle 4i+4), in 16-bit halves whose carry chains
   // take the block RAM word directly (P', a register, is the inverted operand):
@@ -392,7 +403,7 @@ module hexstep_engine #(
   reg        c_decf_n;
 
   always @* begin
-    // Division: a step of each unit; the quotient of the slot in stage 3 (cycle 4i+8).
+    // Division: a step of each unit.
     dv0 = dstep(dfirst[0] ? pn_hi_q[31 -: SUB_W] : dr_q[0], ds_q[0]);
     dv1 = dstep(dfirst[1] ? pn_hi_q[31 -: SUB_W] : dr_q[1], ds_q[1]);
 
@@ -490,10 +501,8 @@ module hexstep_engine #(
       dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
       dfl_q <= ~dfc_lc[17];
     end
-    if (kph_q[3]) begin
-      due_a_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h;
-      due_b_q <= dz_q[du] ? dbase + DUE_OFFSET : due_h1;
-    end
+    ds3_q <= {ds_u, 1'b0} + {2'b00, ds_u};
+    if (kph_q[3]) req_due_q <= dz_q[du] ? dbase + DUE_OFFSET : due_n;
     // Division units: loaded with the speed at the end of 4i+3 (the unit of the axis's
     // parity), a restoring step at every other edge; the first step (4i+4) divides the
     // overshoot's top bits straight from pn_hi_q (dfirst), so that the block RAM read and the
@@ -532,7 +541,7 @@ module hexstep_engine #(
     sf_d = sf_q; spend_d = spend_q; ppend_d = ppend_q; fstart_d = fstart_q; fstop_d = fstop_q;
     flush = {NS{1'b0}}; pop = {NS{1'b0}}; consumed = {NS{1'b0}};
     refused = {NS{1'b0}}; freed = {NS{1'b0}};
-    req_due = q0_last ? due_a_q : due_b_q;
+    req_due = req_due_q;
     pos = 2'd0; sfk = {SF_W{1'b0}};
 
     // Commit of the slot in stage 3 (edge ending 4i+8), from the decisions registered at 4i+5;
