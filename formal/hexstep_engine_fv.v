@@ -190,7 +190,7 @@ module hexstep_engine_fv #(
   always @(posedge clk_i) t <= rst_i ? 10'd0 : (t == 10'd1023) ? t : t + 10'd1;
 
   // ---- the bus block's side ----
-  wire [6:0]  g;
+  wire [6:0]  g, gn;
   wire [3:0]  kph;
   wire        bus_cyc = (g[1:0] == 2'd3);
   wire [7:0]  n_bus = t[9:2];    // bus cycle number at g = 4n + 3
@@ -310,7 +310,7 @@ module hexstep_engine_fv #(
   wire [POS_W-1:0] pos;
 
   hexstep_engine #(.NAXES (1)) u_eng (
-    .clk_i (clk_i), .rst_i (rst_i), .g_o (g), .kph_o (kph),
+    .clk_i (clk_i), .rst_i (rst_i), .g_o (g), .gn_o (gn), .kph_o (kph),
     .start_w_i (start_w), .stop_w_i (stop_i), .abort_i (abort_i),
     .push_i (push), .push_axis_i (3'd0), .push_flags_i (push_flags),
     .bus_re_i (1'b0), .bus_rbank_i (2'd0), .bus_raddr_i (8'd0), .bus_rdata_o (bus_rdata),
@@ -322,7 +322,7 @@ module hexstep_engine_fv #(
     .req_o (req), .req_due_o (req_due), .tgt_load_o (tgt_load), .tgt_dir_o (tgt_dir)
   );
   hexstep_pulse #(.PULSE_W (PULSE_W), .POS_W (POS_W)) u_pulse (
-    .clk_i (clk_i), .rst_i (rst_i), .g_i (g),
+    .clk_i (clk_i), .rst_i (rst_i), .gn_i (gn),
     .abort_i (abort_i), .req_i (req), .req_due_i (req_due),
     .tgt_load_i (tgt_load), .tgt_dir_i (tgt_dir),
     .step_high_i (f_high), .step_low_i (f_low), .dir_setup_i (f_setup), .dir_hold_i (f_hold),

@@ -42,7 +42,7 @@ module hexstep_pulse_fv #(
   wire [POS_W-1:0] pos;
 
   hexstep_pulse #(.PULSE_W (PULSE_W), .POS_W (POS_W)) u_dut (
-    .clk_i (clk_i), .rst_i (rst_i), .g_i (g),
+    .clk_i (clk_i), .rst_i (rst_i), .gn_i (g + 7'd1),
     .abort_i (abort_i), .req_i (req_i), .req_due_i (req_due_i),
     .tgt_load_i (tgt_load_i), .tgt_dir_i (tgt_dir_i),
     .step_high_i (f_high), .step_low_i (f_low), .dir_setup_i (f_setup), .dir_hold_i (f_hold),
@@ -158,6 +158,7 @@ module hexstep_pulse_fv #(
   // never assumed) ----
   (* keep *) wire               f_v0, f_v1, f_v2;       // u_dut.v0_q .. v2_q
   (* keep *) wire [6:0]         f_e0, f_e1, f_e2;       // u_dut.t0_q .. t2_q
+  (* keep *) wire               f_m0, f_m1, f_m2;       // u_dut.m0_q .. m2_q
   (* keep *) wire [1:0]         f_owed_i, f_wait_i;     // u_dut.owed_q, u_dut.wait_q
   (* keep *) wire [PULSE_W-1:0] f_cs, f_cd;             // u_dut.cs_q, u_dut.cd_q
   (* keep *) wire               f_cso, f_cdo, f_md;     // u_dut.cso_q, cdo_q, md_q
@@ -174,6 +175,10 @@ module hexstep_pulse_fv #(
   wire [1:0] f_nv = {1'b0, f_v0} + {1'b0, f_v1} + {1'b0, f_v2};
   always @* if (!rst_i && p_have) begin
     assert (f_nv == f_n);
+    // A valid entry's registered due compare is its due cycle's compare with g.
+    if (f_v0) assert (f_m0 == (f_e0 == g));
+    if (f_v1) assert (f_m1 == (f_e1 == g));
+    if (f_v2) assert (f_m2 == (f_e2 == g));
     if (f_n != 2'd0) assert (has(f_t0));
     if (f_n >= 2'd2) assert (has(f_t1) && f_d1 > f_d0);
     if (f_n == 2'd3) assert (has(f_t2) && f_d2 > f_d1);

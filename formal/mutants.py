@@ -78,6 +78,8 @@ MUTANTS = [
      "c_cnt_end = ~p2_fl[F_JOG] & zre_q;", "c_cnt_end = zre_q;", "engine", "bmc_cnt"),
     ("loader step decode one step off", "hexstep_wb.v",
      "lz1_q <= (lnx == 6'd0);", "lz1_q <= (lnx == 6'd1);", "wb", "prove"),
+    ("entry's registered due compare one cycle late", "hexstep_pulse.v",
+     "m1_d = (t1_q == gn_i);", "m1_d = (t1_q == gn_i + 7'd1);", "pulse", "prove"),
 ]
 
 

@@ -45,6 +45,7 @@ module hexstep_engine #(
   input  wire               clk_i,
   input  wire               rst_i,          // synchronous, active high
   output wire [6:0]         g_o,            // cycle counter modulo 128
+  output wire [6:0]         gn_o,           // g_o after this edge (g_o + 1), a register of its own
   output wire [3:0]         kph_o,          // its low two bits one-hot: kph_o[n] == (g_o[1:0] == n)
   // Control from the bus block; each acts at the edge that ends the cycle it is high in.
   input  wire [NAXES-1:0]   start_w_i,      // START written: start at the next frame boundary
@@ -98,6 +99,7 @@ module hexstep_engine #(
   // ---------------------------------------------------------------------------------------
   // Cycle counter.
   reg  [6:0] g_q;
+  reg  [6:0] gn_q;   // g_q + 1, for the output stages' due compares of the next cycle
   wire [4:0] f = g_q[4:0];
   wire [1:0] kc = g_q[1:0];
   // kc one-hot, a register of its own (kph_q[n] == (kc == n)): the slot cycle's strobes and
@@ -650,6 +652,7 @@ module hexstep_engine #(
   always @(posedge clk_i) begin
     if (rst_i) begin
       g_q <= 7'd0;
+      gn_q <= 7'd1;
       kph_q <= 4'b0001;
       run_q <= {NS{1'b0}}; decf_q <= {NS{1'b0}}; stop_q <= {NS{1'b0}};
       chain_q <= {NS{1'b0}}; running_q <= {NS{1'b0}}; starting_q <= {NS{1'b0}};
@@ -663,6 +666,7 @@ module hexstep_engine #(
       si_q <= 3'd0; smp_oh_q <= {NS{1'b0}};
     end else begin
       g_q <= g_q + 7'd1;
+      gn_q <= gn_q + 7'd1;
       kph_q <= {kph_q[2:0], kph_q[3]};
       // The next sample's axis: axis 0 after frame cycle 30, then one slot further at each bus
       // cycle (none for slots NAXES..7).
@@ -743,6 +747,7 @@ module hexstep_engine #(
     end
   endgenerate
   assign g_o = g_q;
+  assign gn_o = gn_q;
   assign kph_o = kph_q;
   assign act_o = act_q[NAXES*2-1:0];
   assign qn_o = qn_q[NAXES*2-1:0];

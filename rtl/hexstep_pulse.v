@@ -4,7 +4,7 @@
 `default_nettype none
 
 // The engine hands over each generated step as a request due at a given cycle (the cycle
-// counter modulo 128, g_i); on that cycle the step becomes owed, and an owed step rises as
+// counter g modulo 128); on that cycle the step becomes owed, and an owed step rises as
 // soon as the pulse timing allows. Counterpart of hexstep::PulseStage (cpp_model/src/axis.cpp).
 //
 // Timing, with four intervals loaded from the live configuration at the event that starts
@@ -39,11 +39,12 @@ module hexstep_pulse #(
 ) (
   input  wire               clk_i,
   input  wire               rst_i,        // synchronous, active high
-  input  wire [6:0]         g_i,          // cycle counter (modulo 128)
+  // The cycle counter (modulo 128) after this edge: the engine's g + 1, a register of its own.
+  input  wire [6:0]         gn_i,
   // From the engine.
   input  wire               abort_i,      // abort: drop requests and owed steps, no rise
   input  wire               req_i,        // a step request, committed at this edge
-  input  wire [6:0]         req_due_i,    // ... due on the cycle with g_i == req_due_i
+  input  wire [6:0]         req_due_i,    // ... due on the cycle with g == req_due_i
   input  wire               tgt_load_i,   // a move starts at this edge: load the DIR target
   input  wire               tgt_dir_i,    // its direction (1: positive)
   // Live timing configuration (clock cycles).
@@ -74,6 +75,10 @@ module hexstep_pulse #(
   // State.
   reg               v0_q, v0_d, v1_q, v1_d, v2_q, v2_d;  // request entries valid
   reg [6:0]         t0_q, t0_d, t1_q, t1_d, t2_q, t2_d;  // ... and their due cycles
+  // Each entry's due compare of the next cycle (t == g after this edge), so that no compare
+  // of the cycle counter sits in front of the rise condition: mK_q == (tK_q == g) in every
+  // cycle of a valid entry (asserted in hexstep_pulse_fv).
+  reg               m0_q, m0_d, m1_q, m1_d, m2_q, m2_d;
   reg [1:0]         owed_q, owed_d;      // steps due but not yet pulsed (at most 3)
   reg               step_q, step_d;      // STEP level before polarity (1: pulse high)
   reg               dir_q, dir_d;        // DIR level before polarity (1: positive)
@@ -92,12 +97,13 @@ module hexstep_pulse #(
   reg               rz_q, rz_d;
 
   reg dir_change, rise, fall, due0, due1, due2;
+  wire req_gn = (req_due_i == gn_i);   // a request due at the next cycle (the same in every stage)
 
   always @* begin
     // Events, all from the old state.
-    due0 = v0_q && (t0_q == g_i);
-    due1 = v1_q && (t1_q == g_i);
-    due2 = v2_q && (t2_q == g_i);
+    due0 = v0_q && m0_q;
+    due1 = v1_q && m1_q;
+    due2 = v2_q && m2_q;
     // hold over: in hold mode the counter, in setup mode always (hold ended before setup began);
     // setup over: in setup mode the counter, in hold mode always (likewise).
     dir_change = (dir_q != tgt_q) && (cdo_q || !md_q);
@@ -111,6 +117,9 @@ module hexstep_pulse #(
     t0_d = t0_q;
     t1_d = t1_q;
     t2_d = t2_q;
+    m0_d = (t0_q == gn_i);
+    m1_d = (t1_q == gn_i);
+    m2_d = (t2_q == gn_i);
     // At most one entry is due per cycle (requests are due on distinct cycles).
     owed_d = owed_q + {1'b0, due0 | due1 | due2} - {1'b0, rise};
     step_d = step_q;
@@ -129,12 +138,15 @@ module hexstep_pulse #(
       if (!v0_q) begin
         v0_d = 1'b1;
         t0_d = req_due_i;
+        m0_d = req_gn;
       end else if (!v1_q) begin
         v1_d = 1'b1;
         t1_d = req_due_i;
+        m1_d = req_gn;
       end else begin
         v2_d = 1'b1;
         t2_d = req_due_i;
+        m2_d = req_gn;
       end
     end
     if (abort_i) begin
@@ -208,11 +220,14 @@ module hexstep_pulse #(
     end
   end
 
-  // Due cycles: not reset (read only while their entry is valid).
+  // Due cycles and their compares: not reset (read only while their entry is valid).
   always @(posedge clk_i) begin
     t0_q <= t0_d;
     t1_q <= t1_d;
     t2_q <= t2_d;
+    m0_q <= m0_d;
+    m1_q <= m1_d;
+    m2_q <= m2_d;
   end
 
   // A request fits: at most two steps (entries + owed) wait, so an entry is free. Both flags

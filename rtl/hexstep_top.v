@@ -47,7 +47,8 @@ module hexstep_top #(
   // The speed and position fraction (SPEED_W) are 64 bits, fixed by the engine's two 32-bit
   // halves; INFO0 reports it.
 
-  wire [6:0]               g;
+  wire [6:0]               unused_g;   // the cycle counter (the engine's harness reads it)
+  wire [6:0]               gn;         // ... after this edge (the output stages' due compares)
   wire [3:0]               kph;
   wire [NAXES-1:0]         start_w, stop_w, abort, busy, run, done, refused, freed, flush;
   wire [NAXES-1:0]         accepts, pending, tgt, req, tgt_load, step_inv, dir_inv;
@@ -88,7 +89,7 @@ module hexstep_top #(
   );
 
   hexstep_engine #(.NAXES (NAXES), .RAM_STYLE (RAM_STYLE)) u_engine (
-    .clk_i (clk_i), .rst_i (rst_i), .g_o (g), .kph_o (kph),
+    .clk_i (clk_i), .rst_i (rst_i), .g_o (unused_g), .gn_o (gn), .kph_o (kph),
     .start_w_i (start_w), .stop_w_i (stop_w), .abort_i (abort),
     .push_i (push), .push_axis_i (push_axis), .push_flags_i (push_flags),
     .bus_re_i (bus_re), .bus_rbank_i (bus_rbank), .bus_raddr_i (bus_raddr),
@@ -105,7 +106,7 @@ module hexstep_top #(
   generate
     for (k = 0; k < NAXES; k = k + 1) begin : g_axis
       hexstep_pulse #(.PULSE_W (PULSE_W), .POS_W (POS_W)) u_pulse (
-        .clk_i (clk_i), .rst_i (rst_i), .g_i (g),
+        .clk_i (clk_i), .rst_i (rst_i), .gn_i (gn),
         .abort_i (abort[k]), .req_i (req[k]), .req_due_i (req_due),
         .tgt_load_i (tgt_load[k]), .tgt_dir_i (tgt_dir),
         .step_high_i (step_high[k*PULSE_W +: PULSE_W]), .step_low_i (step_low[k*PULSE_W +: PULSE_W]),
