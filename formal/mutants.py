@@ -70,7 +70,7 @@ MUTANTS = [
      "PH_DECEL: begin c_sell1 = 1'b1; c_sell0 = p2_stop |", "engine",
      "bmc_stop"),
     ("STOP leaves the queue and the chain", "hexstep_engine.v",
-     "if (fstop_q[k]) begin", "if (fstop_q[k] && 1'b0) begin", "engine", "bmc_cnt"),
+     "if (sfs_q[k]) begin", "if (sfs_q[k] && 1'b0) begin", "engine", "bmc_cnt"),
     ("refused move started", "hexstep_engine.v",
      "wire       c_consume = p2_start & (p2_fl[F_BAD] | p2_fl[F_EMPTY]);",
      "wire       c_consume = p2_start & p2_fl[F_EMPTY];", "engine", "bmc_cons"),
@@ -80,6 +80,11 @@ MUTANTS = [
      "lz1_q <= (lnx == 6'd0);", "lz1_q <= (lnx == 6'd1);", "wb", "prove"),
     ("entry's registered due compare one cycle late", "hexstep_pulse.v",
      "m1_d = (t1_q == gn_i);", "m1_d = (t1_q == gn_i + 7'd1);", "pulse", "prove"),
+    ("chained start does not pop the queue", "hexstep_engine.v",
+     "sst_q[ga] <= n_ss & (n_sn | n_sc);", "sst_q[ga] <= n_ss & n_sn;", "engine", "bmc_chain"),
+    ("zero flag enabled in idle", "hexstep_wb.v",
+     "else if (ldc_ld) lzs_q <= ld_zf(lnx);", "else if (ldc_ld) lzs_q <= ld_zf(lnx) | {13'd0, idle};",
+     "wb", "prove"),
 ]
 
 

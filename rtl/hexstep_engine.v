@@ -157,6 +157,16 @@ module hexstep_engine #(
   wire [2:0]         si = si_q;
   wire [NS-1:0]      a_start, a_gen;
   reg  [NS-1:0]      sn_q, sc_q, sa_q;              // start new, start chained, accepts
+  // The sample's per-axis strobes, registered at the same edge and 1 in that axis's sample
+  // cycle only, so that neither the bus cycle flag (kph_q[3], a net of high fan-out) nor the
+  // pointer is in front of the sample's state updates: the sample (ss_q); the sample with a
+  // STOP of the frame, which flushes the queue (sfs_q: fstop_q in the sample cycle, which an
+  // abort at the edge before clears); the sample with a start, which pops the queue's head
+  // (sst_q; a start excludes a STOP). An abort in the sample cycle itself is applied to them
+  // in the state update below.
+  reg  [NS-1:0]      ss_q, sfs_q, sst_q;
+  // The pointer in the sample cycle: the edge before it moves it only after frame cycle 30.
+  wire [NS-1:0]      smp_nx = (g_q[4:0] == 5'd30) ? {{(NS-1){1'b0}}, 1'b1} : smp_oh_q;
   genvar ga;
   generate
     for (ga = 0; ga < NS; ga = ga + 1) begin : g_dec
@@ -166,16 +176,27 @@ module hexstep_engine #(
       wire       n_fstop = boundary ? ppend_q[ga] : fstop_q[ga];
       wire       n_busy = run_q[ga] | chain_q[ga] | starting_q[ga] | pending_n[ga];
       wire       n_dir_ok = hf[F_BAD] | hf[F_EMPTY] | (hf[F_DIR] == tgt[ga]) | ~pending_n[ga];
+      wire       n_sn = n_fstart & ~n_fstop & ~running_q[ga] & ~n_busy &
+                        (qn_q[ga*2 +: 2] != 2'd0) & ~abort[ga];
+      wire       n_sc = chain_q[ga] & ~n_fstop & accepts_n[ga] & n_dir_ok & ~abort[ga];
+      wire       n_ss = kph_q[2] & smp_nx[ga];
       always @(posedge clk_i) begin
         if (rst_i) begin
           sn_q[ga] <= 1'b0;
           sc_q[ga] <= 1'b0;
           sa_q[ga] <= 1'b0;
-        end else if (kph_q[2]) begin
-          sn_q[ga] <= n_fstart & ~n_fstop & ~running_q[ga] & ~n_busy &
-                      (qn_q[ga*2 +: 2] != 2'd0) & ~abort[ga];
-          sc_q[ga] <= chain_q[ga] & ~n_fstop & accepts_n[ga] & n_dir_ok & ~abort[ga];
-          sa_q[ga] <= accepts_n[ga];
+          ss_q[ga] <= 1'b0;
+          sfs_q[ga] <= 1'b0;
+          sst_q[ga] <= 1'b0;
+        end else begin
+          if (kph_q[2]) begin
+            sn_q[ga] <= n_sn;
+            sc_q[ga] <= n_sc;
+            sa_q[ga] <= accepts_n[ga];
+          end
+          ss_q[ga] <= n_ss;
+          sfs_q[ga] <= n_ss & n_fstop & ~abort[ga];
+          sst_q[ga] <= n_ss & (n_sn | n_sc);
         end
       end
       assign a_start[ga] = sn_q[ga] | sc_q[ga];
@@ -580,22 +601,22 @@ module hexstep_engine #(
       end
     end
 
-    // Sample (edge ending 4i-1), per axis with the one-hot pointer.
+    // Sample (edge ending 4i-1), per axis with its registered strobes (ss_q, sfs_q, sst_q; an
+    // abort, below, overrides a STOP's flush, whose updates are its own).
     for (k = 0; k < NAXES; k = k + 1) begin
-      if (smp_oh_q[k] && kph_q[3]) begin
-        if (!abort[k]) begin
-          if (fstop_q[k]) begin
-            flush[k] = 1'b1;
-            running_d[k] = 1'b0;
-            chain_d[k] = 1'b0;
-          end else if (a_start[k]) begin
-            pop[k] = 1'b1;
-            act_d[k*2 +: 2] = inc3(act_q[k*2 +: 2]);
-            if (sn_q[k]) running_d[k] = 1'b1;   // a new move (not chained)
-            chain_d[k] = 1'b0;
-            starting_d[k] = 1'b1;
-          end
-        end
+      if (sfs_q[k]) begin
+        flush[k] = 1'b1;
+        running_d[k] = 1'b0;
+        chain_d[k] = 1'b0;
+      end
+      if (sst_q[k] && !abort[k]) begin
+        pop[k] = 1'b1;
+        act_d[k*2 +: 2] = inc3(act_q[k*2 +: 2]);
+        if (sn_q[k]) running_d[k] = 1'b1;   // a new move (not chained)
+        chain_d[k] = 1'b0;
+        starting_d[k] = 1'b1;
+      end
+      if (ss_q[k]) begin
         fstart_d[k] = 1'b0;
         fstop_d[k] = 1'b0;
       end

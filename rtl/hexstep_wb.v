@@ -405,6 +405,26 @@ module hexstep_wb #(
     ld_hold = (j == 6'd1) || (j == 6'd5) || (j == 6'd7) || (j == 6'd9) || (j == 6'd11) ||
               (j == 6'd13) || (j == 6'd15) || (j == 6'd17) || (j == 6'd19);
   endfunction
+  // The zero flag of lz that the check of step j writes (one-hot over bits 0..13; 0: none).
+  function [13:0] ld_zf(input [5:0] j);
+    case (j)
+      6'd1:  ld_zf = 14'd1 << 0;
+      6'd2:  ld_zf = 14'd1 << 1;
+      6'd3:  ld_zf = 14'd1 << 2;
+      6'd4:  ld_zf = 14'd1 << 3;
+      6'd5:  ld_zf = 14'd1 << 4;
+      6'd6:  ld_zf = 14'd1 << 6;
+      6'd7:  ld_zf = 14'd1 << 5;
+      6'd8:  ld_zf = 14'd1 << 7;
+      6'd10: ld_zf = 14'd1 << 8;
+      6'd12: ld_zf = 14'd1 << 9;
+      6'd18: ld_zf = 14'd1 << 10;
+      6'd20: ld_zf = 14'd1 << 11;
+      6'd21: ld_zf = 14'd1 << 12;
+      6'd22: ld_zf = 14'd1 << 13;
+      default: ld_zf = 14'd0;
+    endcase
+  endfunction
   // Steps whose compare is the high word of a 64-bit compare (the low word's borrow enters).
   function ld_hi_cmp(input [5:0] j);
     ld_hi_cmp = (j == 6'd8) || (j == 6'd12) || (j == 6'd16) || (j == 6'd20);
@@ -480,6 +500,15 @@ module hexstep_wb #(
   reg  [5:0] ldst_q;                 // ld_dst(ocnt - 1)
   reg  [6:0] lsr0_q, lsr1_q;         // {bank, word} of the staging word that step ocnt reads,
                                      // for V_END nonzero (0) and zero (1): ld_src's two cases
+  // ld_zf(ocnt - 1): the zero flag that the check of this step writes, each flag's enable with
+  // the check cycle alone (no decode of the operation or the step in front of lz). 0 outside a
+  // push (reset in the initialization; loaded in idle with ld_zf(63) and at a push's last edge
+  // with ld_zf(LOADER_STEPS), both 0; asserted in hexstep_wb_fv: fv_lzs_ok).
+  reg  [13:0] lzs_q;
+  always @(posedge clk_i) begin
+    if (rst_i) lzs_q <= 14'd0;
+    else if (ldc_ld) lzs_q <= ld_zf(lnx);
+  end
   always @(posedge clk_i) begin
     if (ldc_ld) begin
       lst_q <= lnx;
@@ -503,9 +532,11 @@ module hexstep_wb #(
       lst_q == fv_ls && lz0_q == (ocnt_q == 6'd0) && lz1_q == (ocnt_q == 6'd1) &&
       lrd_q == (ocnt_q < LOADER_STEPS) && lhc_q == ld_hi_cmp(fv_ls) &&
       lsh_q == ld_shl(fv_ls) && linv_q == ld_inv(fv_ls) && lhe_q == ld_hold(fv_ls) &&
-      ldst_q == ld_dst(fv_ls) &&
+      ldst_q == ld_dst(fv_ls) && lzs_q == ld_zf(fv_ls) &&
       lsr0_q == {stg_bank(ld_src(ocnt_q, 1'b0)), stg_word(ld_src(ocnt_q, 1'b0))} &&
       lsr1_q == {stg_bank(ld_src(ocnt_q, 1'b1)), stg_word(ld_src(ocnt_q, 1'b1))};
+  // ... and lzs_q outside a push.
+  (* keep *) wire fv_lzs_ok = (op_q == OP_PUSH) || (lzs_q == 14'd0);
 `endif
 
   // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
@@ -521,7 +552,7 @@ module hexstep_wb #(
   wire [31:0] mg = ((rdq & ~osel_mask) | (odat_q & osel_mask)) & mw_mask;
   wire [31:0] lw = lsh_q ? (rdq << (32 - DFRAC_W)) : linv_q ? rdqn_q : rdq;
 
-  integer k, i;
+  integer k, i, zi;
   reg        hit, overrun, estop_rise, drop;
   reg [2:0]  eset;
   reg [1:0]  qv;
@@ -649,29 +680,16 @@ module hexstep_wb #(
           // The word held for a later compare: enabled by its registered decode (lhe_q) rather
           // than a decode of the step in front of 32 flip-flops.
           if (lhe_q) lh_d = rdq;
-          case (lst_q)
-            6'd0: begin ljog_d = rdq[1]; ldir_d = rdq[0]; end
-            6'd1: lz_d[0] = (rdq == 32'd0);
-            6'd2: lz_d[1] = (rdq == 32'd0);
-            6'd3: lz_d[2] = (rdq == 32'd0);
-            6'd4: lz_d[3] = (rdq == 32'd0);
-            6'd5: lz_d[4] = (rdq == 32'd0);
-            6'd6: lz_d[6] = (rdq == 32'd0);
-            6'd7: lz_d[5] = (rdq == 32'd0);
-            6'd8: lz_d[7] = (rdq == 32'd0);
-            6'd10: lz_d[8] = (rdq == 32'd0);
-            6'd12: lz_d[9] = (rdq == 32'd0);
-            6'd18: lz_d[10] = (rdq == 32'd0);
-            6'd20: lz_d[11] = (rdq == 32'd0);
-            6'd21: lz_d[12] = (rdq == 32'd0);
-            6'd22: lz_d[13] = (rdq == 32'd0);
-            default: ;
-          endcase
+          if (lst_q == 6'd0) begin ljog_d = rdq[1]; ldir_d = rdq[0]; end
           odat_d = lw;
         end
       end
       default: ;
     endcase
+    // The zero flags of the step's check (steps 1..8, 10, 12, 18, 20..22): lzs_q is 0 outside
+    // a push and at its step 63 (lz0_q), so the check cycle alone enables them.
+    for (zi = 0; zi < 14; zi = zi + 1)
+      if (proc_cyc && lzs_q[zi]) lz_d[zi] = (rdq == 32'd0);
     // The loader compare of the last cycle (its step lcs_q): lc for a low word's, a flag of lg
     // for a high or single word's.
     if (lcv_q) begin
