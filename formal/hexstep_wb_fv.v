@@ -310,12 +310,14 @@ module hexstep_wb_fv #(
   (* keep *) wire        f_cap;          // u_dut.cap_q: the request was taken (decoded)
   (* keep *) wire        f_rq_ok;        // u_dut.fv_rq_ok: its registered decodes are the bus's
   (* keep *) wire        f_lzs_ok;       // u_dut.fv_lzs_ok: no zero flag enabled outside a push
+  (* keep *) wire        f_mwm_ok;       // u_dut.fv_mwm_ok: the mask register is the operation word's
   wire f_busy_op = f_op != OP_IDLE && f_op != OP_INIT;
   wire f_stg_op = f_op == OP_SRD || f_op == OP_SWR;
   wire f_cfg_op = f_op == OP_CRD || f_op == OP_CWR;
   always @* if (!rst_i && p_have) begin
     assert (f_op <= OP_PUSH);
     assert (f_lzs_ok);
+    assert (f_mwm_ok);
     if (f_op == OP_INIT) assert (!ack && f_oax < NAXES && f_owd <= 5'd7 &&
                                  f_init == ({f_oax, f_owd} > f_a) && f_val == f_reset);
     else assert (f_init);

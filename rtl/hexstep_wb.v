@@ -435,7 +435,21 @@ module hexstep_wb #(
   wire        mw_cfg = (op_q == OP_CRD) || (op_q == OP_CWR);
   wire [1:0]  mw_bank = mw_cfg ? 2'd3 : stg_bank(owd_q);
   wire [4:0]  mw_word = mw_cfg ? owd_q : stg_word(owd_q);
-  wire [31:0] mw_mask = mw_cfg ? cfg_mask(owd_q[2:0]) : stg_mask(owd_q);
+  // The implemented bits, a register of its own loaded on every idle cycle from the bus's word
+  // (like owd_q; a staging or configuration operation starts from idle with the request's
+  // word, held on the bus until its ack), so that it is not a function of owd_q, whose register
+  // Yosys would move behind the mask's ROM, in front of the bus engine's bookkeeping
+  // (asserted in hexstep_wb_fv: fv_mwm_ok).
+  reg  [31:0] mwm_q;
+  wire [2:0]  mwm_cw = widx[2:0] - W_CFG[2:0];
+  always @(posedge clk_i)
+    if (idle) mwm_q <= w_stg ? stg_mask(widx) : cfg_mask(mwm_cw);
+  wire [31:0] mw_mask = mwm_q;
+`ifdef FORMAL
+  (* keep *) wire fv_mwm_ok = !(op_q == OP_SRD || op_q == OP_SWR || op_q == OP_CRD ||
+                                op_q == OP_CWR) ||
+                              (mwm_q == (mw_cfg ? cfg_mask(owd_q[2:0]) : stg_mask(owd_q)));
+`endif
   wire [31:0] osel_mask = {{8{osel_q[3]}}, {8{osel_q[2]}}, {8{osel_q[1]}}, {8{osel_q[0]}}};
   reg         m_re, m_init;
   reg  [1:0]  m_rbank;
