@@ -83,7 +83,7 @@ MUTANTS = [
     ("chained start does not pop the queue", "hexstep_engine.v",
      "sst_q[ga] <= n_ss & (n_sn | n_sc);", "sst_q[ga] <= n_ss & n_sn;", "engine", "bmc_chain"),
     ("zero flag enabled in idle", "hexstep_wb.v",
-     "else if (ldc_ld) lzs_q <= ld_zf(lnx);", "else if (ldc_ld) lzs_q <= ld_zf(lnx) | {13'd0, idle};",
+     "else if (ldc_ld) lzs_q <= ld_zf(lnx);", "else if (ldc_ld) lzs_q <= ld_zf(lnx) | {{(LZ_W-1){1'b0}}, idle};",
      "wb", "prove"),
 ]
 

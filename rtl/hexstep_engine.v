@@ -166,7 +166,8 @@ module hexstep_engine #(
   // in the state update below.
   reg  [NS-1:0]      ss_q, sfs_q, sst_q;
   // The pointer in the sample cycle: the edge before it moves it only after frame cycle 30.
-  wire [NS-1:0]      smp_nx = (g_q[4:0] == 5'd30) ? {{(NS-1){1'b0}}, 1'b1} : smp_oh_q;
+  localparam [NS-1:0] SMP_FIRST = {{(NS-1){1'b0}}, 1'b1};   // the pointer at axis 0
+  wire [NS-1:0]      smp_nx = boundary ? SMP_FIRST : smp_oh_q;
   genvar ga;
   generate
     for (ga = 0; ga < NS; ga = ga + 1) begin : g_dec
@@ -691,9 +692,9 @@ module hexstep_engine #(
       kph_q <= {kph_q[2:0], kph_q[3]};
       // The next sample's axis: axis 0 after frame cycle 30, then one slot further at each bus
       // cycle (none for slots NAXES..7).
-      if (kph_q[3] || g_q[4:0] == 5'd30) begin
-        si_q <= (g_q[4:0] == 5'd30) ? 3'd0 : si_q + 3'd1;
-        smp_oh_q <= (g_q[4:0] == 5'd30) ? {{(NS-1){1'b0}}, 1'b1} : {smp_oh_q[NS-2:0], 1'b0};
+      if (kph_q[3] || boundary) begin
+        si_q <= boundary ? 3'd0 : si_q + 3'd1;
+        smp_oh_q <= boundary ? SMP_FIRST : {smp_oh_q[NS-2:0], 1'b0};
       end
       run_q <= run_d; decf_q <= decf_d; stop_q <= stop_d; chain_q <= chain_d;
       running_q <= running_d; starting_q <= starting_d;

@@ -169,7 +169,9 @@ module hexstep_wb #(
   reg  [31:0]      lh_q, lh_d;
   reg  [31:0]      rdqn_q;                    // the loader's read data, registered inverted
   reg              lc_q, lc_d;                // carry into a compare (1, or a low word's carry)
-  reg  [15:0]      lz_q, lz_d;                // zero flags
+  localparam integer LZ_W = 14;              // the zero flags' width (bits below)
+  localparam [LZ_W-1:0] LZ_ONE = 1;
+  reg  [LZ_W-1:0]  lz_q, lz_d;                // zero flags
   reg  [5:0]       lg_q, lg_d;                // greater-than flags
   reg              ljog_q, ljog_d, ldir_q, ldir_d;
   // lz bits: 0 st, 1 as, 2 ds, 3 df, 4 vm_lo, 5 vm_hi, 6 vs_lo, 7 vs_hi, 8 ve_lo, 9 ve_hi,
@@ -405,24 +407,24 @@ module hexstep_wb #(
     ld_hold = (j == 6'd1) || (j == 6'd5) || (j == 6'd7) || (j == 6'd9) || (j == 6'd11) ||
               (j == 6'd13) || (j == 6'd15) || (j == 6'd17) || (j == 6'd19);
   endfunction
-  // The zero flag of lz that the check of step j writes (one-hot over bits 0..13; 0: none).
-  function [13:0] ld_zf(input [5:0] j);
+  // The zero flag of lz that the check of step j writes (one-hot over lz's bits; 0: none).
+  function [LZ_W-1:0] ld_zf(input [5:0] j);
     case (j)
-      6'd1:  ld_zf = 14'd1 << 0;
-      6'd2:  ld_zf = 14'd1 << 1;
-      6'd3:  ld_zf = 14'd1 << 2;
-      6'd4:  ld_zf = 14'd1 << 3;
-      6'd5:  ld_zf = 14'd1 << 4;
-      6'd6:  ld_zf = 14'd1 << 6;
-      6'd7:  ld_zf = 14'd1 << 5;
-      6'd8:  ld_zf = 14'd1 << 7;
-      6'd10: ld_zf = 14'd1 << 8;
-      6'd12: ld_zf = 14'd1 << 9;
-      6'd18: ld_zf = 14'd1 << 10;
-      6'd20: ld_zf = 14'd1 << 11;
-      6'd21: ld_zf = 14'd1 << 12;
-      6'd22: ld_zf = 14'd1 << 13;
-      default: ld_zf = 14'd0;
+      6'd1:  ld_zf = LZ_ONE << 0;
+      6'd2:  ld_zf = LZ_ONE << 1;
+      6'd3:  ld_zf = LZ_ONE << 2;
+      6'd4:  ld_zf = LZ_ONE << 3;
+      6'd5:  ld_zf = LZ_ONE << 4;
+      6'd6:  ld_zf = LZ_ONE << 6;
+      6'd7:  ld_zf = LZ_ONE << 5;
+      6'd8:  ld_zf = LZ_ONE << 7;
+      6'd10: ld_zf = LZ_ONE << 8;
+      6'd12: ld_zf = LZ_ONE << 9;
+      6'd18: ld_zf = LZ_ONE << 10;
+      6'd20: ld_zf = LZ_ONE << 11;
+      6'd21: ld_zf = LZ_ONE << 12;
+      6'd22: ld_zf = LZ_ONE << 13;
+      default: ld_zf = {LZ_W{1'b0}};
     endcase
   endfunction
   // Steps whose compare is the high word of a 64-bit compare (the low word's borrow enters).
@@ -518,9 +520,9 @@ module hexstep_wb #(
   // the check cycle alone (no decode of the operation or the step in front of lz). 0 outside a
   // push (reset in the initialization; loaded in idle with ld_zf(63) and at a push's last edge
   // with ld_zf(LOADER_STEPS), both 0; asserted in hexstep_wb_fv: fv_lzs_ok).
-  reg  [13:0] lzs_q;
+  reg  [LZ_W-1:0] lzs_q;
   always @(posedge clk_i) begin
-    if (rst_i) lzs_q <= 14'd0;
+    if (rst_i) lzs_q <= {LZ_W{1'b0}};
     else if (ldc_ld) lzs_q <= ld_zf(lnx);
   end
   always @(posedge clk_i) begin
@@ -550,7 +552,7 @@ module hexstep_wb #(
       lsr0_q == {stg_bank(ld_src(ocnt_q, 1'b0)), stg_word(ld_src(ocnt_q, 1'b0))} &&
       lsr1_q == {stg_bank(ld_src(ocnt_q, 1'b1)), stg_word(ld_src(ocnt_q, 1'b1))};
   // ... and lzs_q outside a push.
-  (* keep *) wire fv_lzs_ok = (op_q == OP_PUSH) || (lzs_q == 14'd0);
+  (* keep *) wire fv_lzs_ok = (op_q == OP_PUSH) || (lzs_q == {LZ_W{1'b0}});
 `endif
 
   // The loader's word of step ocnt - 1 (its data, read three cycles ago and registered, as the
@@ -702,7 +704,7 @@ module hexstep_wb #(
     endcase
     // The zero flags of the step's check (steps 1..8, 10, 12, 18, 20..22): lzs_q is 0 outside
     // a push and at its step 63 (lz0_q), so the check cycle alone enables them.
-    for (zi = 0; zi < 14; zi = zi + 1)
+    for (zi = 0; zi < LZ_W; zi = zi + 1)
       if (proc_cyc && lzs_q[zi]) lz_d[zi] = (rdq == 32'd0);
     // The loader compare of the last cycle (its step lcs_q): lc for a low word's, a flag of lg
     // for a high or single word's.
