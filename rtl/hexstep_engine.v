@@ -21,8 +21,8 @@
 // (cycles before the end of its tick) comes from a 5-bit restoring division of the top 12 bits
 // (SUB_W) of the overshoot P' and of S; the step is handed to the axis's output stage due on cycle
 // F + 68 - q (F: first cycle of the sample's frame). No multiplier, no divider: adders,
-// comparators, a 13-bit compare-and-subtract five times. Bit-exact counterpart: hexstep::AxisGen
-// and hexstep::TopModel (cpp_model/src/axis.cpp, top_model.cpp).
+// comparators, three restoring steps (a subtraction each) and a look-ahead of two. Bit-exact
+// counterpart: hexstep::AxisGen and hexstep::TopModel (cpp_model/src/axis.cpp, top_model.cpp).
 //
 // Memory map (address = {axis, word}; slot s of the queue at words 8 + 8s + offset):
 //   bank 0: 0 S_lo, 1 S_hi, 2 steps-to-end;            3..7 staging;  slot: +0 V_START lo, +1 hi, +2 STEPS
@@ -314,14 +314,17 @@ module hexstep_engine #(
   reg [31:0] pn_lo_q, tn_lo_q, llo_q, pn_hi_q, tn_hi_q, lhi_q;
   reg [31:0] re_n_q, ra_n_q, rd_n_q;
   reg        zre_q, zra_q, zrd_q, zrd0_q, sell_q;
-  // Sub-tick division: two units, one for the even and one for the odd axes, each doing one
-  // restoring step per cycle in cycles 4i+4..4i+7 (the units alternate, so a step never waits);
-  // the last quotient bit is a two-step look-ahead in 4i+7 (req_due_q below), and a unit's step
-  // in 4i+8 is unused (its next slot's first step takes the overshoot, dfirst).
-  reg [SUB_W-1:0] dr_q [0:1];              // partial remainder
-  reg [SUB_W-1:0] ds_q [0:1];              // divisor: top bits of S
-  reg [3:0]       dq_q [0:1];              // quotient bits so far
-  reg             dz_q [0:1];              // divisor zero
+  // Sub-tick division: three restoring steps in a row, one per cycle, each a stage of its own
+  // (4i+4: dra from the overshoot's top bits in pn_hi_q, 4i+5: drb from dra, 4i+6: drc from
+  // drb), all with the divisor ds_q; the fourth and fifth quotient bits are a two-step
+  // look-ahead on drc in 4i+7 (req_due_q below). pn_hi_q and ds_q are loaded at the end of
+  // 4i+3 and hold until the end of 4i+7, so each stage's register is loaded at every edge and
+  // keeps its value from the end of its cycle to the end of 4i+7: no clock enable, and no
+  // select in front of a step (each step has one operand source).
+  reg [SUB_W-1:0] dra_q, drb_q, drc_q;     // partial remainders after steps 1, 2, 3
+  reg             dqa_q, dqb_q, dqc_q;     // quotient bits of steps 1, 2, 3
+  reg [SUB_W-1:0] ds_q;                    // divisor: top bits of S
+  reg             dz_q;                    // divisor zero
 
   // Masks of the stage-1 operation (cycles 4i+2, 4i+3).
   // p1_smask (t = 0 + V_DEC) and p1_cin (S + ~dec + 1) are registered at the end of cycle 4i
@@ -356,48 +359,45 @@ module hexstep_engine #(
   function dbit(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
     dbit = {rem, 1'b0} >= {1'b0, s};
   endfunction
-  // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0).
-  // rem <= s holds throughout (the overshoot is below the speed), so rem fits SUB_W bits.
+  // One restoring division step: 2*rem >= s ? (2*rem - s, 1) : (2*rem, 0), as one subtraction
+  // whose borrow is the compare (one carry chain). rem <= s holds throughout (the overshoot is
+  // below the speed), so 2*rem - s <= s and, when 2*rem < s, 2*rem fit SUB_W bits.
   function [SUB_W:0] dstep(input [SUB_W-1:0] rem, input [SUB_W-1:0] s);
-    reg [SUB_W-1:0] r2;                  // 2*rem, its top bit dropped (the result's width)
+    reg [SUB_W+1:0] t;                   // 2*rem - s; t[SUB_W+1]: borrow (2*rem < s)
     begin
-      r2 = {rem[SUB_W-2:0], 1'b0};
-      dstep = dbit(rem, s) ? {r2 - s, 1'b1} : {r2, 1'b0};
+      t = {1'b0, rem, 1'b0} - {2'b00, s};
+      dstep = t[SUB_W+1] ? {rem[SUB_W-2:0], 1'b0, 1'b0} : {t[SUB_W-1:0], 1'b1};
     end
   endfunction
-  reg [SUB_W:0]   dv0, dv1;
-  // The unit whose first step is this cycle's (cycle 4i+4: stage 2's axis, just loaded).
-  wire [1:0]      dfirst = {2{kph_q[0]}} & {p2_ax[0], ~p2_ax[0]};
+  wire [SUB_W:0]  dva = dstep(pn_hi_q[31 -: SUB_W], ds_q);
+  wire [SUB_W:0]  dvb = dstep(dra_q, ds_q);
+  wire [SUB_W:0]  dvc = dstep(drb_q, ds_q);
   // Due cycle F + 68 - q of the request, with q = {h, q0} (h: the first four quotient bits):
   // 68 - q = 37 + ~q, so it is F + 37 + {~h, 0} when q0 = 1 and one more when q0 = 0, and
   // F + 68 when the divisor is zero (q = 0). It is registered (req_due_q) at the end of cycle
-  // 4i+7, when the slot's unit (p2's) holds the remainder r of three steps: the fourth bit is
+  // 4i+7, when drc_q holds the remainder r of three steps: the fourth bit is
   // q3 = 2r >= s, and the fifth, q0 = 2(2r - s) >= s = 4r >= 3s when q3 = 1, else 4r >= s
   // (exact: r <= s, so neither 4r nor 3s overflows SUB_W + 2 bits). So the fifth step of cycle
   // 4i+8 is not on the due's path, and the commit takes a register. With F = 32 * frame,
   // F + 37 + 2 * ~h = 2 * ({frame, ~h} + 18) + 1 (the frame and ~h do not overlap); the adds
   // are on registers only (see dhu below).
   reg  [6:0]      req_due_q;
-  wire            du = p2_ax[0];                            // the unit of stage 2's axis
-  // 3 s of the unit of stage 2's axis, registered in every cycle (valid from 4i+5: ds_q is
-  // loaded at the end of 4i+3).
+  // 3 s, registered in every cycle (valid from 4i+5: ds_q is loaded at the end of 4i+3).
   reg  [SUB_W+1:0] ds3_q;
-  wire [SUB_W-1:0] dr_u = dr_q[du];
-  wire [SUB_W-1:0] ds_u = ds_q[du];
-  // The fourth quotient bit: the compare of dstep on the unit's own remainder (the first-step
-  // select, dfirst, is 0 in that cycle and stays off this path).
-  wire            dq3 = dbit(dr_u, ds_u);
-  wire            dc1 = {dr_u, 2'b00} >= {2'b00, ds_u};             // 4r >= s
-  wire            dc3 = {dr_u, 2'b00} >= ds3_q;                      // 4r >= 3s
+  // The fourth quotient bit, 2r >= s on the remainder of three steps (drc_q in 4i+7).
+  wire            dq3 = dbit(drc_q, ds_q);
+  wire            dc1 = {drc_q, 2'b00} >= {2'b00, ds_q};            // 4r >= s
+  wire            dc3 = {drc_q, 2'b00} >= ds3_q;                     // 4r >= 3s
   wire            dq0 = dq3 ? dc3 : dc1;
   wire [6:0]      dbase = {p2_frame, 5'd0};
   localparam [5:0] DUE_HALF = DUE_OFFSET[6:1] - 6'd16;      // 18 = (68 - 32) / 2
-  // {frame, ~h} + 18 with h = {dq[2:0], dq3}: 18 is even, so the sum is {U, ~dq3} with
-  // U = {frame, ~dq[2:0]} + 9 (registers only), and one more is {U, 1} or {U + 1, 0}: the
-  // quotient bits only select, after the adds. The due is {U, ~q3, 1} when q0 = 1, {U, 1, 0}
-  // when q0 = 0 and q3 = 1, {U + 1, 0, 0} when both are 0: its bits 1:0 are {q0 ^ q3, q0},
-  // and the high bits are U + 1 only when q3 = 0 and 4r < s (q0 = 0 then), off the q0 select.
-  wire [4:0]      dhb = {p2_frame, ~dq_q[du][2:0]};
+  // {frame, ~h} + 18 with h = {dq[2:0], dq3} (dq = {dqa, dqb, dqc}, steps 1 to 3): 18 is
+  // even, so the sum is {U, ~dq3} with U = {frame, ~dq[2:0]} + 9 (registers only), and one
+  // more is {U, 1} or {U + 1, 0}: the quotient bits only select, after the adds. The due is
+  // {U, ~q3, 1} when q0 = 1, {U, 1, 0} when q0 = 0 and q3 = 1, {U + 1, 0, 0} when both are 0:
+  // its bits 1:0 are {q0 ^ q3, q0}, and the high bits are U + 1 only when q3 = 0 and 4r < s
+  // (q0 = 0 then), off the q0 select.
+  wire [4:0]      dhb = {p2_frame, ~dqa_q, ~dqb_q, ~dqc_q};
   wire [4:0]      dhu = dhb + DUE_HALF[5:1];
   wire [4:0]      dhu1 = dhb + (DUE_HALF[5:1] + 5'd1);
   wire            unused_due_half = DUE_HALF[0];
@@ -427,10 +427,6 @@ module hexstep_engine #(
   reg        c_decf_n;
 
   always @* begin
-    // Division: a step of each unit.
-    dv0 = dstep(dfirst[0] ? pn_hi_q[31 -: SUB_W] : dr_q[0], ds_q[0]);
-    dv1 = dstep(dfirst[1] ? pn_hi_q[31 -: SUB_W] : dr_q[1], ds_q[1]);
-
     c_clamp = ct1_q | ~gt_q;
     // The select of S (the limit instead of t), registered as sell_q with gt_q at the end of
     // 4i+4 from the compare's carry c_gt_hi itself (gt_q's next value), so that the S_lo and
@@ -511,7 +507,7 @@ module hexstep_engine #(
       cl0_q <= c_gt_lo;
       lhi_q <= rd3;
     end
-    if (kph_q[0]) begin  // counters, compare high, deceleration point, division 1 (cycle 4i+4)
+    if (kph_q[0]) begin  // counters, compare high, deceleration point (cycle 4i+4)
       gt_q <= c_gt_hi;
       sell_q <= c_sell;
       re_n_q <= rd0 - {31'd0, step_q};
@@ -525,25 +521,18 @@ module hexstep_engine #(
       dfe_q <= (pn_hi_q[31:16] == rd3[31:16]);
       dfl_q <= ~dfc_lc[17];
     end
-    ds3_q <= {ds_u, 1'b0} + {2'b00, ds_u};
-    if (kph_q[3]) req_due_q <= dz_q[du] ? dbase + DUE_OFFSET : due_n;
-    // Division units: loaded with the speed at the end of 4i+3 (the unit of the axis's
-    // parity), a restoring step at every other edge; the first step (4i+4) divides the
-    // overshoot's top bits straight from pn_hi_q (dfirst), so that the block RAM read and the
-    // 33-bit add behind it end in pn_hi_q alone.
+    ds3_q <= {ds_q, 1'b0} + {2'b00, ds_q};
+    if (kph_q[3]) req_due_q <= dz_q ? dbase + DUE_OFFSET : due_n;
+    // Division: the divisor is loaded with the speed at the end of 4i+3; the steps' registers
+    // at every edge (see above). The first step divides the overshoot's top bits straight from
+    // pn_hi_q, so that the block RAM read and the 33-bit add behind it end in pn_hi_q alone.
     if (kph_q[3]) begin
-      ds_q[p1_ax[0]] <= rd0[31 -: SUB_W];
-      dz_q[p1_ax[0]] <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
-      dq_q[p1_ax[0]] <= 4'd0;
-      // The other unit (the previous axis) does its fourth step.
-      dr_q[~p1_ax[0]] <= p1_ax[0] ? dv0[SUB_W:1] : dv1[SUB_W:1];
-      dq_q[~p1_ax[0]] <= {dq_q[~p1_ax[0]][2:0], p1_ax[0] ? dv0[0] : dv1[0]};
-    end else begin
-      dr_q[0] <= dv0[SUB_W:1];
-      dr_q[1] <= dv1[SUB_W:1];
-      dq_q[0] <= {dq_q[0][2:0], dv0[0]};
-      dq_q[1] <= {dq_q[1][2:0], dv1[0]};
+      ds_q <= rd0[31 -: SUB_W];
+      dz_q <= (rd0[31 -: SUB_W] == {SUB_W{1'b0}});
     end
+    {dra_q, dqa_q} <= dva;
+    {drb_q, dqb_q} <= dvb;
+    {drc_q, dqc_q} <= dvc;
   end
   wire [32:0] phi_sum = add_co(rd1, rd0, cp0_q, kph_q[3], g_q[0]);
   wire [32:0] s_lo_sum = add_co(rd0, rd2, p1_cin, kph_q[2], g_q[1]);
