@@ -306,6 +306,27 @@ def cell_counts(stat_json, family):
             "by_type": cells}
 
 
+def pnr_options(name, t):
+    """nextpnr options of a target beyond device, clock and seed: the arguments and the keys
+    its result records. 'router': router1 (nextpnr's default) or router2; 'tmg_ripup': true
+    adds --tmg-ripup (router1 rips up and reroutes the nets of failing paths)."""
+    args, res = [], {}
+    if t.get("router"):
+        if t["router"] not in ("router1", "router2"):
+            die(f"{TARGETS}: target {name}: router must be router1 or router2, "
+                f"not {t['router']!r}")
+        args += ["--router", t["router"]]
+        res["router"] = t["router"]
+    if "tmg_ripup" in t:
+        if not isinstance(t["tmg_ripup"], bool):
+            die(f"{TARGETS}: target {name}: tmg_ripup must be true or false, "
+                f"not {t['tmg_ripup']!r}")
+        if t["tmg_ripup"]:
+            args += ["--tmg-ripup"]
+        res["tmg_ripup"] = t["tmg_ripup"]
+    return args, res
+
+
 def build(name, out_root, results, strict, firmware=None):
     targets = load_targets()
     if name not in targets:
@@ -326,13 +347,15 @@ def build(name, out_root, results, strict, firmware=None):
         die(f"{TARGETS}: target {name}: soc_params only on SoC board targets, accepted: "
             f"{SOC_PARAM_NAMES}")
 
+    pnr_args, pnr_res = pnr_options(name, t)  # checked before Yosys runs
+
     params = dict(t.get("params", {}))
     clock = float(t["clock_mhz"])
     res = {"target": name, "kind": t["kind"], "family": fam, "device": t["device"],
            "package": t["package"], "speed": t.get("speed"), "top": t["top"],
            "params": dict(params), "config": config_label(t), "clock_mhz": clock,
            "goals": t.get("goals", {}), "tools": tool_versions(fam),
-           "git": git_head(), "ram_style": RAM_STYLE[fam]}
+           "git": git_head(), "ram_style": RAM_STYLE[fam], **pnr_res}
     params["RAM_STYLE"] = f'"{RAM_STYLE[fam]}"'
     if board and t.get("pll", True):
         pll, ach = pll_params(t, bdir)
@@ -427,11 +450,7 @@ def build(name, out_root, results, strict, firmware=None):
                 [f"--{t['device']}", "--package", t["package"], "--speed", str(t["speed"])])
     # The run's inputs and options (paths relative to bdir); `seeds` repeats it with other seeds.
     args = [*dev_args, "--json", "netlist.json", "--freq", f"{clock:g}", "--timing-allow-fail"]
-    if t.get("router"):  # nextpnr's default is router1; router2 routes large ECP5 designs faster
-        if t["router"] not in ("router1", "router2"):
-            die(f"{TARGETS}: target {name}: router must be router1 or router2")
-        args += ["--router", t["router"]]
-        res["router"] = t["router"]
+    args += pnr_args
     if board:
         args += ["--pcf" if fam == "ice40" else "--lpf",
                  os.path.relpath(os.path.join(ROOT, t["constraints"]), bdir)]
@@ -691,6 +710,8 @@ def table(results):
              "",
              "LUT mapping: " + lut_note(rows),
              "",
+             "Place and route: " + pnr_note(rows),
+             "",
              "Design: the fingerprint `design_sha` of the result (SHA-256 of the target's "
              "sources, constraints, targets.json entry and, for a SoC, firmware image; "
              "`flow.py design_files`) and the `git describe` of the tree it was built from. "
@@ -743,6 +764,21 @@ def lut_note(rows):
         return "abc9 (plain synth_ice40 / synth_ecp5) on every row."
     return ("abc9 (plain synth_ice40 / synth_ecp5) except " + ", ".join(other) +
             ": classic abc -lut 4:7 after abc9 failed (synth/flow.py, build).")
+
+
+def pnr_note(rows):
+    """Which rows ran nextpnr with options beyond the device, clock and seed (targets.json:
+    'tmg_ripup', 'router'), so that a row's Fmax can be repeated with the same command."""
+    ripup = [r["target"] for r in rows if r.get("tmg_ripup")]
+    router = [f"{r['target']} ({r['router']})" for r in rows if r.get("router")]
+    parts = []
+    if ripup:
+        parts.append("`--tmg-ripup` (timing-driven rip-up and reroute) on " + ", ".join(ripup))
+    if router:
+        parts.append("`--router` on " + ", ".join(router))
+    if not parts:
+        return "nextpnr's defaults (router1, no timing rip-up) on every row."
+    return "; ".join(parts) + "; nextpnr's defaults on the other rows."
 
 
 def design_cell(r, t, stale):
