@@ -22,11 +22,15 @@ $(BUILD)/build.ninja:
 build: deps $(BUILD)/build.ninja
 	cmake --build $(BUILD) -j $(JOBS)
 
-# Lint: Verilator -Wall (waivers by file and line in rtl/verilator_waiver.vlt) and a Yosys
+# Lint: Verilator -Wall (waivers by file and line in rtl/verilator_waiver.vlt) of both memory
+# styles (RAM_STYLE "ECP5" against the DP16KD model of tests/ram/dp16kd_sim.v) and a Yosys
 # read that fails on any warning, on a design check problem, or on a multiplier or divider.
+DP16KD_SIM := tests/ram/dp16kd_sim.v
 lint: deps
 	@mkdir -p $(BUILD)
 	verilator --lint-only -Wall -Irtl rtl/verilator_waiver.vlt $(RTL) --top-module hexstep_top
+	verilator --lint-only -Wall -Irtl rtl/verilator_waiver.vlt $(RTL) $(DP16KD_SIM) --top-module hexstep_top \
+	  -GRAM_STYLE='"ECP5"'
 	$(YOSYS) -q -p '$(YOSYS_LINT)' > $(BUILD)/yosys_lint.log 2>&1 || { cat $(BUILD)/yosys_lint.log; exit 1; }
 	@! grep -i "warning" $(BUILD)/yosys_lint.log
 

@@ -4,9 +4,8 @@
 # `make demo` ends with the plan -> send -> firmware -> core chain (scripts/demo.sh).
 SOC_RTL := soc/hexstep_soc.v soc/hexstep_soc_ram.v soc/hexstep_soc_uart.v
 # Board tops of the SoC (soc/boards/hexstep_soc_<board>.v, built by `make synth-soc_<board>`,
-# mk/synth.mk): linted with their default parameters too, except that the ECP5 board's core
-# memory is linted in its generic style: the DP16KD primitive of RAM_STYLE "ECP5" is a Lattice
-# library cell that Verilator has no model of.
+# mk/synth.mk): linted with their default parameters too; the ECP5 board's DP16KD block RAM
+# (RAM_STYLE "ECP5") against the project's model of it, tests/ram/dp16kd_sim.v (Makefile).
 SOC_BOARDS := icebreaker ulx3s
 SOC_PICORV32 = $(shell $(VENV)/bin/python -c "import pythondata_cpu_picorv32 as p; print(p.data_location)")/picorv32.v
 .PHONY: soc-lint
@@ -15,7 +14,7 @@ soc-lint: deps
 	verilator --lint-only -Wall --timescale 1ns/1ps -Irtl soc/hexstep_soc_waiver.vlt rtl/verilator_waiver.vlt \
 	  $(SOC_PICORV32) rtl/hexstep_top.v $(SOC_RTL) --top-module hexstep_soc
 	for b in $(SOC_BOARDS); do \
-	  g=; case $$b in ulx3s) g=-GRAM_STYLE=\"DELAY\";; esac; \
+	  g=; case $$b in ulx3s) g=$(DP16KD_SIM);; esac; \
 	  verilator --lint-only -Wall --timescale 1ns/1ps -Irtl soc/hexstep_soc_waiver.vlt rtl/verilator_waiver.vlt \
 	    $(SOC_PICORV32) rtl/hexstep_top.v $(SOC_RTL) rtl/boards/hexstep_board_reset.v soc/boards/hexstep_soc_board.v \
 	    soc/boards/hexstep_soc_$$b.v --top-module hexstep_soc_$$b $$g || exit 1; \

@@ -12,8 +12,11 @@
 //     edge into its own output register (iCE40 SB_RAM40_4K: no fabric flip-flops on the data).
 //   STYLE "ECP5": two DP16KD (18 bits each) reading at the first edge into their output
 //     register (REGMODE OUTREG): the ECP5 block RAM's clock-to-output without that register is
-//     about 5.6 ns, more than a 150 MHz cycle leaves for the logic behind it.
-// Simulation with Verilator checks that rule and stops on a violation.
+//     about 5.6 ns, more than a 150 MHz cycle leaves for the logic behind it. In the x18 mode
+//     address bits 1..0 of the write port are its byte enables (Lattice TN1264; Yosys maps them
+//     so too), tied high here: tied low, the block RAM would never be written.
+// Simulation with Verilator checks that rule and stops on a violation. tests/ram runs both
+// styles side by side, STYLE "ECP5" on a model of DP16KD (tests/ram/dp16kd_sim.v).
 //
 // No reset: the memory holds data only; the engine reads a word only after writing it.
 module hexstep_ram #(
@@ -32,10 +35,12 @@ module hexstep_ram #(
   generate
     if (STYLE == "ECP5") begin : g_ecp5
       wire [35:0] q;
+      wire [3:0]  unused_q = {q[35:34], q[17:16]};  // the parity bits, written 0
       genvar h;
       for (h = 0; h < 2; h = h + 1) begin : g_half
         wire [17:0] d = {2'b00, wdata_i[h*16 +: 16]};
         wire [17:0] o;
+        wire [17:0] unused_a;  // port A's read data: port A only writes
         DP16KD #(
           .DATA_WIDTH_A (18), .DATA_WIDTH_B (18),
           .REGMODE_A ("NOREG"), .REGMODE_B ("OUTREG"),
@@ -43,10 +48,10 @@ module hexstep_ram #(
           .CSDECODE_A ("0b000"), .CSDECODE_B ("0b000"),
           .GSR ("DISABLED")
         ) u_bram (
-          // Port A: write.
+          // Port A: write, both byte enables (ADA1, ADA0) on.
           .CLKA (clk_i), .CEA (1'b1), .OCEA (1'b1), .WEA (we_i), .RSTA (1'b0),
           .CSA0 (1'b0), .CSA1 (1'b0), .CSA2 (1'b0),
-          .ADA0 (1'b0), .ADA1 (1'b0), .ADA2 (1'b0), .ADA3 (1'b0),
+          .ADA0 (1'b1), .ADA1 (1'b1), .ADA2 (1'b0), .ADA3 (1'b0),
           .ADA4 (waddr_i[0]), .ADA5 (waddr_i[1]), .ADA6 (waddr_i[2]), .ADA7 (waddr_i[3]),
           .ADA8 (waddr_i[4]), .ADA9 (waddr_i[5]), .ADA10 (waddr_i[6]), .ADA11 (waddr_i[7]),
           .ADA12 (1'b0), .ADA13 (1'b0),
@@ -54,6 +59,12 @@ module hexstep_ram #(
           .DIA6 (d[6]), .DIA7 (d[7]), .DIA8 (d[8]), .DIA9 (d[9]), .DIA10 (d[10]), .DIA11 (d[11]),
           .DIA12 (d[12]), .DIA13 (d[13]), .DIA14 (d[14]), .DIA15 (d[15]), .DIA16 (d[16]),
           .DIA17 (d[17]),
+          .DOA0 (unused_a[0]), .DOA1 (unused_a[1]), .DOA2 (unused_a[2]), .DOA3 (unused_a[3]),
+          .DOA4 (unused_a[4]), .DOA5 (unused_a[5]), .DOA6 (unused_a[6]), .DOA7 (unused_a[7]),
+          .DOA8 (unused_a[8]), .DOA9 (unused_a[9]), .DOA10 (unused_a[10]),
+          .DOA11 (unused_a[11]), .DOA12 (unused_a[12]), .DOA13 (unused_a[13]),
+          .DOA14 (unused_a[14]), .DOA15 (unused_a[15]), .DOA16 (unused_a[16]),
+          .DOA17 (unused_a[17]),
           // Port B: read, through the output register.
           .CLKB (clk_i), .CEB (1'b1), .OCEB (1'b1), .WEB (1'b0), .RSTB (1'b0),
           .CSB0 (1'b0), .CSB1 (1'b0), .CSB2 (1'b0),
