@@ -72,7 +72,6 @@ class RamBench {
   }
 
   uint64_t checked() const { return checked_; }
-  const std::array<bool, 256>& written() const { return written_; }
   uint8_t prev_raddr() const { return prev_raddr_; }
   bool prev_re() const { return prev_re_; }
 
