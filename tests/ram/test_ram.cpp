@@ -18,6 +18,8 @@
 
 namespace {
 
+constexpr int kWords = 256;  // the bank's words (8-bit addresses)
+
 struct Port {
   bool re = false, we = false;
   uint8_t raddr = 0, waddr = 0;
@@ -32,8 +34,8 @@ class RamBench {
   }
   ~RamBench() { top_->final(); }
 
-  // The rule: a write to waddr in the cycle of p's read address is allowed unless that word's
-  // used read is driven now or was in the cycle before.
+  // The rule: a write to waddr is allowed unless waddr is the read address of this cycle (p)
+  // or of the cycle before.
   bool write_allowed(uint8_t waddr, const Port& p) const {
     return !(p.re && waddr == p.raddr) && !(prev_re_ && waddr == prev_raddr_);
   }
@@ -77,8 +79,8 @@ class RamBench {
  private:
   VerilatedContext ctx_;
   std::unique_ptr<Vram_tb_top> top_;
-  std::array<uint32_t, 256> ref_{};
-  std::array<bool, 256> written_{};
+  std::array<uint32_t, kWords> ref_{};
+  std::array<bool, kWords> written_{};
   std::optional<uint32_t> last_;  // the word the read of the cycle before must return
   bool prev_re_ = false;
   uint8_t prev_raddr_ = 0;
@@ -90,7 +92,7 @@ class RamBench {
 // address order and in reverse: a lost byte lane, a swapped half or a wrong address bit shows.
 TEST(Ram, WriteAllThenReadBack) {
   RamBench b;
-  for (int a = 0; a < 256; ++a) {
+  for (int a = 0; a < kWords; ++a) {
     Port p;
     p.we = true;
     p.waddr = static_cast<uint8_t>(a);
@@ -100,10 +102,10 @@ TEST(Ram, WriteAllThenReadBack) {
     b.cycle(p);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  for (int i = 0; i < 512; ++i) {
+  for (int i = 0; i < 2 * kWords; ++i) {  // every word forward, then backward
     Port p;
     p.re = true;
-    p.raddr = static_cast<uint8_t>(i < 256 ? i : 511 - i);
+    p.raddr = static_cast<uint8_t>(i < kWords ? i : 2 * kWords - 1 - i);
     b.cycle(p);
     if (::testing::Test::HasFatalFailure()) return;
   }
