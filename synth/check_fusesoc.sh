@@ -17,6 +17,12 @@ for t in default lint sim icebreaker ulx3s colorlight_i5; do
     > "$work/$t.log" 2>&1 || { cat "$work/$t.log"; echo "fusesoc setup of target $t failed"; exit 1; }
   ls "$work/$t"/*/*/*.eda.yml > /dev/null || { echo "no EDA project for target $t"; exit 1; }
 done
+# The ECP5 board targets pass the options of synth/targets.json's ECP5 targets (nowidelut,
+# tmg_ripup): the set-up's Yosys script and Makefile carry them.
+for t in ulx3s colorlight_i5; do
+  grep -rq -- "-nowidelut" "$work/$t" || { echo "target $t: synth_ecp5 without -nowidelut"; exit 1; }
+  grep -rq -- "--tmg-ripup" "$work/$t" || { echo "target $t: nextpnr without --tmg-ripup"; exit 1; }
+done
 # The lint target runs for real (Verilator -Wall through edalize), and so does the sim target
 # (Verilator, then synth/fusesoc_sim_main.cpp reads ID and VERSION through the SPI bridge).
 "$fusesoc" --cores-root "$root" run --build-root "$work/lint-run" --target lint "$core" \

@@ -317,33 +317,33 @@ def pnr_options(name, t):
                 f"not {t['router']!r}")
         args += ["--router", t["router"]]
         res["router"] = t["router"]
-    if "tmg_ripup" in t:
-        if not isinstance(t["tmg_ripup"], bool):
-            die(f"{TARGETS}: target {name}: tmg_ripup must be true or false, "
-                f"not {t['tmg_ripup']!r}")
-        if t["tmg_ripup"]:
-            args += ["--tmg-ripup"]
-        res["tmg_ripup"] = t["tmg_ripup"]
+    if bool_key(name, t, "tmg_ripup", res):
+        args += ["--tmg-ripup"]
     return args, res
+
+
+def bool_key(name, t, key, res):
+    """A true/false key of target t: its value (False when absent), recorded in res when set;
+    any other value stops the build, naming the target and the key."""
+    if key not in t:
+        return False
+    if not isinstance(t[key], bool):
+        die(f"{TARGETS}: target {name}: {key} must be true or false, not {t[key]!r}")
+    res[key] = t[key]
+    return t[key]
 
 
 def yosys_options(name, t):
     """Yosys options of a target beyond its top and parameters: the synth_ecp5 arguments and the
     keys its result records. 'nowidelut' (ECP5 only): true adds -nowidelut, so that LUTs wider
-    than four inputs are not built from PFU muxes (PFUMX, L6MUX21); on ooc_ecp5_25f it raised the
-    ten-seed median from 139.1 to 144.2 MHz and the slowest seed from 131.9 to 139.7
-    (docs/SYNTH.md). iCE40 has no PFU muxes, so the key is refused there."""
+    than four inputs are not built from PFU muxes (PFUMX, L6MUX21; measured in docs/SYNTH.md,
+    "Critical paths"). iCE40 has no PFU muxes, so the key is refused there."""
     opts, res = [], {}
-    if "nowidelut" in t:
-        if t.get("family") != "ecp5":
-            die(f"{TARGETS}: target {name}: nowidelut applies only to family ecp5, "
-                f"not {t.get('family')!r}")
-        if not isinstance(t["nowidelut"], bool):
-            die(f"{TARGETS}: target {name}: nowidelut must be true or false, "
-                f"not {t['nowidelut']!r}")
-        if t["nowidelut"]:
-            opts.append("-nowidelut")
-        res["nowidelut"] = t["nowidelut"]
+    if "nowidelut" in t and t.get("family") != "ecp5":
+        die(f"{TARGETS}: target {name}: nowidelut applies only to family ecp5, "
+            f"not {t.get('family')!r}")
+    if bool_key(name, t, "nowidelut", res):
+        opts.append("-nowidelut")
     return opts, res
 
 
@@ -453,7 +453,7 @@ def build(name, out_root, results, strict, firmware=None):
             if os.path.exists(os.path.join(bdir, "yosys.log")):
                 os.replace(os.path.join(bdir, "yosys.log"), os.path.join(bdir, "yosys_abc9.log"))
             first, rc1 = secs, rc
-            lut = "4" if "-nowidelut" in syn_opts else "4:7"
+            lut = "4" if syn_res.get("nowidelut") else "4:7"
             rc, secs, ok = yosys(f"synth_ecp5 {so}-top {top} -run :map_luts; "
                                  f"abc -lut {lut} -dress; clean; "
                                  f"synth_ecp5 {so}-top {top} -run map_cells: -json netlist.json; ")
