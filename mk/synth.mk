@@ -5,6 +5,7 @@
 #                               and docs/SYNTH.md; one JSON per target in synth/results/
 #   make synth-<target>         one target (e.g. make synth-ulx3s), results as above
 #   make synth-modules          iCE40 cells of hexstep_top per module (synth_ice40 -noflatten)
+#                               at six axes, and the cost of one axis (one and six axes)
 # Builds go to $(BUILD)/synth-out/<target>/ (bitstreams: <target>.bin / .bit there). An
 # out-of-context row that does not fit is reported as such; a board that does not fit or misses
 # its core clock, or any Yosys warning not in synth/yosys_waivers.txt on a board, fails the job
@@ -46,4 +47,4 @@ synth-soc: soc-fw
 	exit $$r
 
 synth-modules: deps
-	$(SYNTH_FLOW) modules --out $(SYNTH_OUT)
+	$(SYNTH_FLOW) modules --naxes 1,6 --out $(SYNTH_OUT)

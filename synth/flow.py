@@ -5,7 +5,7 @@
   flow.py build TARGET [--out DIR] [--results DIR] [--strict-warnings] [--firmware HEX]
   flow.py summary [--results DIR] [--doc docs/SYNTH.md]
   flow.py seeds TARGET [--out DIR] [--results DIR] [--seeds 2,3,4,5] [-j N]
-  flow.py modules [--out DIR]
+  flow.py modules [--out DIR] [--naxes N | --naxes A,B]
   flow.py list
 
 build: synthesizes one target in DIR/TARGET (default build/synth-out), writes
@@ -25,8 +25,9 @@ summary: the table of every RESULTS/*.json as Markdown (RESULTS/summary.md, prin
 same table between the markers of the --doc file.
 seeds: places and routes a built TARGET again with other nextpnr seeds (its netlist and
 arguments), Fmax and the critical path's end cells per seed into RESULTS/TARGET.json.
-modules: synthesizes hexstep_top (default parameters) for iCE40 without flattening and prints
-the iCE40 cells per module and instance count (docs/SYNTH.md, "Where the cells go").
+modules: synthesizes hexstep_top (default parameters, NAXES N, default 6) for iCE40 without
+flattening and prints the iCE40 cells per module and instance count (docs/SYNTH.md, "Where the
+cells go"); with A,B it synthesizes both and adds the cost of one axis, the difference over B - A.
 """
 import argparse
 import hashlib
@@ -891,16 +892,19 @@ def summary(results, doc):
     return 0
 
 
-def modules(out_root):
-    """iCE40 cells of hexstep_top per module (synth_ice40 -noflatten, default parameters): a
-    Markdown table on stdout. Without flattening nothing is optimised across module boundaries,
-    so the sum is close to, not equal to, the flat netlist's."""
-    bdir = os.path.join(os.path.abspath(out_root), "modules_ice40")
+MODULE_COLS = ("SB_LUT4", "FF", "SB_CARRY", "SB_RAM40_4K")
+
+
+def module_cells(out_root, naxes):
+    """iCE40 cells of hexstep_top per module at NAXES = naxes (the other parameters default),
+    from synth_ice40 -noflatten in DIR/modules_ice40_N: {short name: (instances, {column: cells
+    of one instance})}, parents before children."""
+    bdir = os.path.join(os.path.abspath(out_root), f"modules_ice40_{naxes}")
     shutil.rmtree(bdir, ignore_errors=True)
     os.makedirs(bdir)
     srcs = " ".join(os.path.relpath(os.path.join(ROOT, x), bdir) for x in RTL)
     rc, _ = run_yosys(bdir, f"read_verilog {srcs}; chparam -set RAM_STYLE "
-                            f"\"{RAM_STYLE['ice40']}\" hexstep_top; "
+                            f"\"{RAM_STYLE['ice40']}\" -set NAXES {naxes} hexstep_top; "
                             "synth_ice40 -noflatten -top hexstep_top")
     if rc != 0 or not os.path.exists(os.path.join(bdir, "stat.json")):
         die(f"modules: yosys failed (exit {rc}), see {bdir}/yosys.log")
@@ -919,25 +923,80 @@ def modules(out_root):
                 if c not in count:
                     order.append(c)
                 count[c] = count.get(c, 0) + count[m] * n
-    cols = [("SB_LUT4", lambda ty: ty.get("SB_LUT4", 0)),
-            ("FF", lambda ty: sum(n for c, n in ty.items() if c.startswith("SB_DFF"))),
-            ("SB_CARRY", lambda ty: ty.get("SB_CARRY", 0)),
-            ("SB_RAM40_4K", lambda ty: ty.get("SB_RAM40_4K", 0))]
-    print("| module | instances | " + " | ".join(c for c, _ in cols) + " |")
-    print("|---|---|" + "---|" * len(cols))
-    tot = [0] * len(cols)
-    for m in sorted(order, key=lambda m: -cols[0][1](types[m]) * count[m]):
-        cells = []
-        for i, (_, fn) in enumerate(cols):
-            v = fn(types[m])
-            tot[i] += v * count[m]
-            cells.append("-" if v == 0 else f"{v:,}" if count[m] == 1 else
-                         f"{v:,} each, {v * count[m]:,}")
-        if all(c == "-" for c in cells):
+    out = {}
+    for m in order:
+        ty = types[m]
+        out[short[m]] = (count[m], {
+            "SB_LUT4": ty.get("SB_LUT4", 0),
+            "FF": sum(n for c, n in ty.items() if c.startswith("SB_DFF")),
+            "SB_CARRY": ty.get("SB_CARRY", 0),
+            "SB_RAM40_4K": ty.get("SB_RAM40_4K", 0)})
+    return out
+
+
+def modules(out_root, naxes):
+    """iCE40 cells of hexstep_top per module (synth_ice40 -noflatten; NAXES from the list naxes,
+    the last the table's, the other parameters default): a Markdown table on stdout. Without
+    flattening nothing is optimised across module boundaries, so the sum is close to, not equal
+    to, the flat netlist's. With two NAXES values a and b, each column of the table is followed
+    by the cost of one axis, (cells at b - cells at a) / (b - a), per module and in total."""
+    runs = {n: module_cells(out_root, n) for n in naxes}
+    big = runs[naxes[-1]]
+    small = runs[naxes[0]] if len(naxes) == 2 else None
+    d = naxes[-1] - naxes[0] if small else 1
+
+    def fmt(v, n):
+        return "-" if v == 0 else f"{v:,}" if n == 1 else f"{v:,} each, {v * n:,}"
+
+    def per_axis(v):
+        return "-" if v == 0 else f"{v:+,.1f}".rstrip("0").rstrip(".")
+
+    hdr = []
+    for c in MODULE_COLS:
+        hdr.append(c)
+        if small:
+            hdr.append(f"{c} per axis")
+    print(f"NAXES {naxes[-1]}" + (f"; per axis: (NAXES {naxes[-1]} - NAXES {naxes[0]}) / {d}"
+                                  if small else "") + "\n")
+    print("| module | instances | " + " | ".join(hdr) + " |")
+    print("|---|---|" + "---|" * len(hdr))
+    tot = {c: 0 for c in MODULE_COLS}
+    tot_small = {c: 0 for c in MODULE_COLS}
+    if small:
+        for n, cells in small.values():
+            for c in MODULE_COLS:
+                tot_small[c] += n * cells[c]
+    for name in sorted(big, key=lambda k: -big[k][1]["SB_LUT4"] * big[k][0]):
+        n, cells = big[name]
+        if all(cells[c] == 0 for c in MODULE_COLS):
             continue  # a wrapper (hexstep_top)
-        print(f"| `{short[m]}` | {count[m]} | " + " | ".join(cells) + " |")
-    print("| total | | " + " | ".join(f"{v:,}" for v in tot) + " |")
+        row = []
+        for c in MODULE_COLS:
+            tot[c] += n * cells[c]
+            row.append(fmt(cells[c], n))
+            if small:
+                n0, c0 = small.get(name, (0, {k: 0 for k in MODULE_COLS}))
+                row.append(per_axis((n * cells[c] - n0 * c0[c]) / d))
+        print(f"| `{name}` | {n} | " + " | ".join(row) + " |")
+    row = []
+    for c in MODULE_COLS:
+        row.append(f"{tot[c]:,}")
+        if small:
+            row.append(per_axis((tot[c] - tot_small[c]) / d))
+    print("| total | | " + " | ".join(row) + " |")
     return 0
+
+
+def parse_naxes(text):
+    """--naxes: one NAXES value, or two increasing ones (a,b); each 1..8 (hexstep_top)."""
+    try:
+        v = [int(x) for x in text.split(",")]
+    except ValueError:
+        v = []
+    if not 1 <= len(v) <= 2 or any(x < 1 or x > 8 for x in v) or (len(v) == 2 and v[0] >= v[1]):
+        die(f"--naxes: one axis count 1..8, or two increasing ones 'A,B' (1 <= A < B <= 8), "
+            f"got '{text}'")
+    return v
 
 
 def main():
@@ -961,6 +1020,9 @@ def main():
     d.add_argument("-j", "--jobs", type=int, default=2)
     m = sub.add_parser("modules", help="iCE40 cells of hexstep_top per module (-noflatten)")
     m.add_argument("--out", default=os.path.join(ROOT, "build", "synth-out"))
+    m.add_argument("--naxes", default="6",
+                   help="NAXES of the table (default 6), or 'A,B': the table at B and the cost "
+                        "of one axis, the difference of the two over B - A")
     sub.add_parser("list")
     a = ap.parse_args()
     if a.cmd == "seeds":
@@ -978,7 +1040,7 @@ def main():
     if a.cmd == "summary":
         return summary(a.results, a.doc)
     if a.cmd == "modules":
-        return modules(a.out)
+        return modules(a.out, parse_naxes(a.naxes))
     print("\n".join(load_targets()))
     return 0
 

@@ -5,7 +5,8 @@ passes them. Every target's options are accepted; the ECP5 targets run with --tm
 synth_ecp5 -nowidelut, the iCE40 ones with neither (docs/SYNTH.md: each raised the 25F's
 ten-seed median; --tmg-ripup changed no iCE40 result, and iCE40 has no PFU muxes); a value
 outside the accepted set stops the build with an error that names the target, the field and
-the accepted values, before any tool runs. Also the Fmax goal's verdict over placement seeds."""
+the accepted values, before any tool runs. Also the Fmax goal's verdict over placement seeds,
+and the axis counts `flow.py modules --naxes` accepts."""
 import contextlib
 import io
 import os
@@ -59,6 +60,20 @@ for fn, bad, field, accepted in [
     check(code not in (None, 0), f"{bad}: exit code {code}, expected non-zero")
     check("bad_target" in msg and field in msg and accepted in msg,
           f"{bad}: message {msg!r} does not name the target, {field} and '{accepted}'")
+
+# `modules --naxes`: one axis count 1..8 (hexstep_top's range) or two increasing ones.
+check(flow.parse_naxes("6") == [6] and flow.parse_naxes("1,6") == [1, 6] and
+      flow.parse_naxes("8") == [8], "--naxes accepts 6, 1,6 and 8")
+for bad in ("0", "9", "6,1", "3,3", "1,9", "x", "", "1,2,3"):
+    err = io.StringIO()
+    code = None
+    with contextlib.redirect_stderr(err):
+        try:
+            flow.parse_naxes(bad)
+        except SystemExit as e:
+            code = e.code
+    check(code not in (None, 0) and "--naxes" in err.getvalue() and "1..8" in err.getvalue(),
+          f"--naxes {bad!r}: exit {code}, message {err.getvalue()!r}")
 
 # The Fmax goal's verdict: seed 1 alone, or every seed `seeds` placed.
 g = {"goals": {"fmax_mhz_min": 150}, "fits": True, "fmax_mhz": 150.5}
