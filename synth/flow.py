@@ -892,7 +892,13 @@ def summary(results, doc):
     return 0
 
 
-MODULE_COLS = ("SB_LUT4", "FF", "SB_CARRY", "SB_RAM40_4K")
+# The columns of `modules`: a name and the cells of one module's cell-type counts it sums.
+MODULE_COLS = {"SB_LUT4": lambda ty: ty.get("SB_LUT4", 0),
+               "FF": lambda ty: sum(n for c, n in ty.items() if c.startswith("SB_DFF")),
+               "SB_CARRY": lambda ty: ty.get("SB_CARRY", 0),
+               "SB_RAM40_4K": lambda ty: ty.get("SB_RAM40_4K", 0)}
+# hexstep_top's NAXES range (rtl/hexstep_top.v: the slots of a frame).
+NAXES_MAX = 8
 
 
 def module_cells(out_root, naxes):
@@ -923,15 +929,8 @@ def module_cells(out_root, naxes):
                 if c not in count:
                     order.append(c)
                 count[c] = count.get(c, 0) + count[m] * n
-    out = {}
-    for m in order:
-        ty = types[m]
-        out[short[m]] = (count[m], {
-            "SB_LUT4": ty.get("SB_LUT4", 0),
-            "FF": sum(n for c, n in ty.items() if c.startswith("SB_DFF")),
-            "SB_CARRY": ty.get("SB_CARRY", 0),
-            "SB_RAM40_4K": ty.get("SB_RAM40_4K", 0)})
-    return out
+    return {short[m]: (count[m], {c: fn(types[m]) for c, fn in MODULE_COLS.items()})
+            for m in order}
 
 
 def modules(out_root, naxes):
@@ -940,16 +939,18 @@ def modules(out_root, naxes):
     flattening nothing is optimised across module boundaries, so the sum is close to, not equal
     to, the flat netlist's. With two NAXES values a and b, each column of the table is followed
     by the cost of one axis, (cells at b - cells at a) / (b - a), per module and in total."""
-    runs = {n: module_cells(out_root, n) for n in naxes}
-    big = runs[naxes[-1]]
-    small = runs[naxes[0]] if len(naxes) == 2 else None
-    d = naxes[-1] - naxes[0] if small else 1
+    big = module_cells(out_root, naxes[-1])
+    small = module_cells(out_root, naxes[0]) if len(naxes) == 2 else None
+    d = naxes[-1] - naxes[0]
 
     def fmt(v, n):
         return "-" if v == 0 else f"{v:,}" if n == 1 else f"{v:,} each, {v * n:,}"
 
     def per_axis(v):
         return "-" if v == 0 else f"{v:+,.1f}".rstrip("0").rstrip(".")
+
+    def total(run, c):
+        return sum(n * cells[c] for n, cells in run.values())
 
     hdr = []
     for c in MODULE_COLS:
@@ -960,42 +961,35 @@ def modules(out_root, naxes):
                                   if small else "") + "\n")
     print("| module | instances | " + " | ".join(hdr) + " |")
     print("|---|---|" + "---|" * len(hdr))
-    tot = {c: 0 for c in MODULE_COLS}
-    tot_small = {c: 0 for c in MODULE_COLS}
-    if small:
-        for n, cells in small.values():
-            for c in MODULE_COLS:
-                tot_small[c] += n * cells[c]
     for name in sorted(big, key=lambda k: -big[k][1]["SB_LUT4"] * big[k][0]):
         n, cells = big[name]
         if all(cells[c] == 0 for c in MODULE_COLS):
             continue  # a wrapper (hexstep_top)
         row = []
         for c in MODULE_COLS:
-            tot[c] += n * cells[c]
             row.append(fmt(cells[c], n))
             if small:
-                n0, c0 = small.get(name, (0, {k: 0 for k in MODULE_COLS}))
+                n0, c0 = small.get(name, (0, cells))   # a module only at b: all per axis
                 row.append(per_axis((n * cells[c] - n0 * c0[c]) / d))
         print(f"| `{name}` | {n} | " + " | ".join(row) + " |")
     row = []
     for c in MODULE_COLS:
-        row.append(f"{tot[c]:,}")
+        row.append(f"{total(big, c):,}")
         if small:
-            row.append(per_axis((tot[c] - tot_small[c]) / d))
+            row.append(per_axis((total(big, c) - total(small, c)) / d))
     print("| total | | " + " | ".join(row) + " |")
     return 0
 
 
 def parse_naxes(text):
-    """--naxes: one NAXES value, or two increasing ones (a,b); each 1..8 (hexstep_top)."""
+    """--naxes: one NAXES value, or two increasing ones (a,b); each 1..NAXES_MAX."""
     try:
         v = [int(x) for x in text.split(",")]
     except ValueError:
         v = []
-    if not 1 <= len(v) <= 2 or any(x < 1 or x > 8 for x in v) or (len(v) == 2 and v[0] >= v[1]):
-        die(f"--naxes: one axis count 1..8, or two increasing ones 'A,B' (1 <= A < B <= 8), "
-            f"got '{text}'")
+    if not 1 <= len(v) <= 2 or any(not 1 <= x <= NAXES_MAX for x in v) or v != sorted(set(v)):
+        die(f"--naxes: one axis count 1..{NAXES_MAX}, or two increasing ones 'A,B' "
+            f"(1 <= A < B <= {NAXES_MAX}), got '{text}'")
     return v
 
 

@@ -41,6 +41,18 @@ check(flow.pnr_options("x", {"router": "router2", "tmg_ripup": True})[0] ==
 check(flow.yosys_options("x", {"family": "ecp5", "nowidelut": False}) ==
       ([], {"nowidelut": False}), "nowidelut false adds no option")
 
+def refusal(fn, *args):
+    """Calls fn, which must stop the flow: (its exit code, or None if it returned; stderr)."""
+    err = io.StringIO()
+    code = None
+    with contextlib.redirect_stderr(err):
+        try:
+            fn(*args)
+        except SystemExit as e:
+            code = e.code
+    return code, err.getvalue()
+
+
 for fn, bad, field, accepted in [
         (flow.pnr_options, {"tmg_ripup": "yes"}, "tmg_ripup", "true or false"),
         (flow.pnr_options, {"tmg_ripup": 1}, "tmg_ripup", "true or false"),
@@ -49,14 +61,7 @@ for fn, bad, field, accepted in [
          "true or false"),
         (flow.yosys_options, {"family": "ice40", "nowidelut": True}, "nowidelut",
          "only to family ecp5")]:
-    err = io.StringIO()
-    code = None
-    with contextlib.redirect_stderr(err):
-        try:
-            fn("bad_target", bad)
-        except SystemExit as e:
-            code = e.code
-    msg = err.getvalue()
+    code, msg = refusal(fn, "bad_target", bad)
     check(code not in (None, 0), f"{bad}: exit code {code}, expected non-zero")
     check("bad_target" in msg and field in msg and accepted in msg,
           f"{bad}: message {msg!r} does not name the target, {field} and '{accepted}'")
@@ -65,15 +70,9 @@ for fn, bad, field, accepted in [
 check(flow.parse_naxes("6") == [6] and flow.parse_naxes("1,6") == [1, 6] and
       flow.parse_naxes("8") == [8], "--naxes accepts 6, 1,6 and 8")
 for bad in ("0", "9", "6,1", "3,3", "1,9", "x", "", "1,2,3"):
-    err = io.StringIO()
-    code = None
-    with contextlib.redirect_stderr(err):
-        try:
-            flow.parse_naxes(bad)
-        except SystemExit as e:
-            code = e.code
-    check(code not in (None, 0) and "--naxes" in err.getvalue() and "1..8" in err.getvalue(),
-          f"--naxes {bad!r}: exit {code}, message {err.getvalue()!r}")
+    code, msg = refusal(flow.parse_naxes, bad)
+    check(code not in (None, 0) and "--naxes" in msg and "1..8" in msg,
+          f"--naxes {bad!r}: exit {code}, message {msg!r}")
 
 # The Fmax goal's verdict: seed 1 alone, or every seed `seeds` placed.
 g = {"goals": {"fmax_mhz_min": 150}, "fits": True, "fmax_mhz": 150.5}
