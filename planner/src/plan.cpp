@@ -79,6 +79,11 @@ namespace {
 constexpr real kMaxRampRatio = 1e12L;
 constexpr real kMaxSpeed = 1e12L;  // steps/s
 constexpr real kMaxAccel = 1e24L;  // steps/s^2
+// Lower ends, far below a register's resolution at any clock (1.7e-13 steps/s at 100 MHz):
+// they keep a*d and the squared speeds far from underflow, where a plan degenerated to
+// 0 steps/s.
+constexpr real kMinSpeed = 1e-30L;  // steps/s
+constexpr real kMinAccel = 1e-30L;  // steps/s^2
 
 void validate(const RampLimits& L) {
   detail::require_positive("--max-speed", L.v_max, "steps/s");
@@ -86,18 +91,6 @@ void validate(const RampLimits& L) {
   detail::require_positive("--decel", L.decel, "steps/s^2");
   detail::require_nonnegative("--start-speed", L.v_start, "steps/s");
   detail::require_nonnegative("--end-speed", L.v_end, "steps/s");
-  // Beyond any clock (a speed register holds < 1 step per cycle): keeps the arithmetic of the
-  // plan far from overflow and rounding to zero (found by fuzz_planner at 1e40 steps/s).
-  if (L.v_max > kMaxSpeed)
-    fail("--max-speed", "must be in (0, " + num(kMaxSpeed) + "] steps/s (got " + num(L.v_max) + ")");
-  if (L.accel > kMaxAccel)
-    fail("--accel", "must be in (0, " + num(kMaxAccel) + "] steps/s^2 (got " + num(L.accel) + ")");
-  if (L.decel > kMaxAccel)
-    fail("--decel", "must be in (0, " + num(kMaxAccel) + "] steps/s^2 (got " + num(L.decel) + ")");
-  if (L.v_start > L.v_max)
-    fail("--start-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_start) + ")");
-  if (L.v_end > L.v_max)
-    fail("--end-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_end) + ")");
   // Ramp rates more than 1e12 apart leave the smaller one below the rounding of the larger in
   // the triangle's peak (a + d), and the plan would degenerate (found by fuzz_planner).
   if (L.decel > L.accel * kMaxRampRatio || L.accel > L.decel * kMaxRampRatio)
@@ -105,6 +98,22 @@ void validate(const RampLimits& L) {
                         " steps/s^2, i.e. in [" + num(L.accel / kMaxRampRatio) + ", " +
                         num(L.accel * kMaxRampRatio) + "] (got " + num(L.decel) +
                         "; with --ratio: in [1e-12, 1e12])");
+  // The upper ends lie beyond any clock (a speed register holds < 1 step per cycle) and keep
+  // the arithmetic far from overflow (found by fuzz_planner at 1e40 steps/s).
+  const std::string speeds = "[" + num(kMinSpeed) + ", " + num(kMaxSpeed) + "] steps/s";
+  const std::string accels = "[" + num(kMinAccel) + ", " + num(kMaxAccel) + "] steps/s^2";
+  // The lower ends with a relative 1e-15 of slack: 1e-30 given as a double is below 1e-30L.
+  auto below = [](real x, real lo) { return x < lo * (1 - 1e-15L); };
+  if (below(L.v_max, kMinSpeed) || L.v_max > kMaxSpeed)
+    fail("--max-speed", "must be in " + speeds + " (got " + num(L.v_max) + ")");
+  if (below(L.accel, kMinAccel) || L.accel > kMaxAccel)
+    fail("--accel", "must be in " + accels + " (got " + num(L.accel) + ")");
+  if (below(L.decel, kMinAccel) || L.decel > kMaxAccel)
+    fail("--decel", "must be in " + accels + " (got " + num(L.decel) + "; --accel/--ratio where --ratio is given)");
+  if (L.v_start > L.v_max)
+    fail("--start-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_start) + ")");
+  if (L.v_end > L.v_max)
+    fail("--end-speed", "must be in [0, --max-speed = " + num(L.v_max) + "] (got " + num(L.v_end) + ")");
 }
 
 void make_constant(PhasePlan& p, real v) {
@@ -207,6 +216,14 @@ PhasePlan plan_min_time(uint64_t steps, const RampLimits& L, bool dir) {
   p.v_peak = vp;
   p.a = vp > v0 ? a : 0;
   p.d = vp > ve ? d : 0;
+  if (p.a == 0 && p.d == 0) {
+    // v0 = ve and the triangle's rise, 2adN/(a+d) in vp^2, is below the rounding of v0^2
+    // (e.g. 1.4e8 steps/s with a ramp rate of 1.8e-7 steps/s^2): the move is one speed, not a
+    // triangle of zero duration (found by fuzz_planner).
+    make_constant(p, vp);
+    finish(p);
+    return p;
+  }
   if (p.a == 0) p.s_acc = 0;
   if (p.d == 0) p.s_dec = 0;
   if (p.profile == Profile::Triangular) {
@@ -244,6 +261,7 @@ PhasePlan plan_timed(uint64_t steps, real T, const Limits& lim, bool dir) {
     finish(p);
     return p;
   }
+  validate(L);
   const real n = static_cast<real>(steps);
   const real v0 = L.v_start, vl = L.v_max, al = L.accel;
   if (n / T <= v0) {

@@ -404,3 +404,56 @@ TEST(MinTime, RampRatesTooFarApartAreRefused) {
   l.decel = 1e9 * 1e12;  // the limit itself is accepted
   EXPECT_EQ(plan_min_time(300, l).steps, 300u);
 }
+
+// A triangle whose rise in speed, vp^2 - v0^2 = 2adN/(a+d), lies below the rounding of v0^2
+// (v0 = ve, one ramp rate tiny) used to come back "triangular" with zero ramp rates and zero
+// duration (found by fuzz/fuzz_planner.cpp, regress_ramps_below_speed_rounding). The exact
+// triangle takes N/v0 seconds to a relative 1e-19 (its peak is v0 + adN/((a+d) v0) to first
+// order, and t = (vp - v0)(1/a + 1/d)); the plan is one speed, v0.
+TEST(MinTime, RampsBelowTheRoundingOfTheSpeedAreConstant) {
+  struct Case {
+    real v0, accel, ratio;
+  };
+  for (const Case c : {Case{1.4e8L, 4, 2.2e7L}, Case{5e6L, 1, 1e11L}}) {
+    Limits l;
+    l.max_speed = 1e10;
+    l.accel = c.accel;
+    l.ratio = c.ratio;
+    l.start_speed = c.v0;
+    const PhasePlan p = plan_min_time(2000, l, false);
+    expect_consistent(p);
+    EXPECT_EQ(p.profile, Profile::Constant) << profile_name(p.profile);
+    EXPECT_EQ(p.v_start, c.v0);
+    EXPECT_EQ(p.v_peak, c.v0);
+    EXPECT_EQ(p.v_end, c.v0);
+    EXPECT_REL(p.duration, 2000 / c.v0, 1e-15);
+    EXPECT_EQ(p.cruise_steps, 2000u);
+    EXPECT_FALSE(p.dir);
+  }
+}
+
+// Speeds and ramp rates far below any use are refused (they underflowed to a plan at
+// 0 steps/s), naming the flag and the range; the bounds themselves are accepted.
+TEST(MinTime, SpeedsAndRampRatesBelowTheRangeAreRefused) {
+  Limits l;
+  l.max_speed = 1e-31;
+  l.accel = 1;
+  expect_error([&] { plan_min_time(10, l); }, "--max-speed", "[1e-30, 1e+12] steps/s");
+  l.max_speed = 1;
+  l.accel = 1e-31;
+  expect_error([&] { plan_min_time(10, l); }, "--accel", "[1e-30, 1e+24] steps/s^2");
+  l.accel = 1e-30;
+  l.ratio = 2;  // decel 5e-31
+  expect_error([&] { plan_min_time(10, l); }, "--decel", "[1e-30, 1e+24] steps/s^2");
+  expect_error([&] { plan_timed(10, 1e20, l); }, "--ratio");  // --time needs ratio 1
+  l.ratio.reset();
+  l.max_speed = 1e-30;
+  const PhasePlan p = plan_min_time(1, l);
+  expect_consistent(p);
+  EXPECT_EQ(p.steps, 1u);
+  EXPECT_GT(p.duration, 0);
+  EXPECT_TRUE(std::isfinite(p.duration));
+  // A timed move slower than its start speed (one speed N/T) is checked alike.
+  l.max_speed = l.start_speed = 1e-31;
+  expect_error([&] { plan_timed(10, 1e20, l); }, "--max-speed", "[1e-30, 1e+12] steps/s");
+}
