@@ -152,11 +152,6 @@ PhasePlan plan_min_time(uint64_t steps, const RampLimits& L, bool dir) {
   }
   const real n = static_cast<real>(steps);
   const real v0 = L.v_start, ve = L.v_end, vM = L.v_max, a = L.accel, d = L.decel;
-  if (v0 == vM && ve == vM) {
-    make_constant(p, vM);
-    finish(p);
-    return p;
-  }
   // Peak of the triangular profile: (vp^2 - v0^2)/(2a) + (vp^2 - ve^2)/(2d) = N.
   real vt2 = (2 * a * d * n + d * v0 * v0 + a * ve * ve) / (a + d);
   const real hi = std::max(v0, ve);
@@ -217,9 +212,9 @@ PhasePlan plan_min_time(uint64_t steps, const RampLimits& L, bool dir) {
   p.a = vp > v0 ? a : 0;
   p.d = vp > ve ? d : 0;
   if (p.a == 0 && p.d == 0) {
-    // v0 = ve and the triangle's rise, 2adN/(a+d) in vp^2, is below the rounding of v0^2
-    // (e.g. 1.4e8 steps/s with a ramp rate of 1.8e-7 steps/s^2): the move is one speed, not a
-    // triangle of zero duration (found by fuzz_planner).
+    // vp = v0 = ve: no ramp. Either v0 = ve = v_max, or the triangle's rise 2adN/(a+d) in vp^2
+    // is below the rounding of v0^2 (e.g. 1.4e8 steps/s with a ramp rate of 1.8e-7 steps/s^2,
+    // found by fuzz_planner): the move is one speed, not a triangle of zero duration.
     make_constant(p, vp);
     finish(p);
     return p;
